@@ -1,0 +1,176 @@
+//! The one error type of the core: what is wrong, and which field is at fault.
+//!
+//! Its JSON form is the contract's error body
+//! `{"error": {"code", "message", "field"}}`; the HTTP layer maps `kind` to a status.
+
+use serde::{de::DeserializeOwned, Serialize};
+use utoipa::ToSchema;
+
+/// Broad class of a rejected input; the HTTP layer maps it to a status code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// Not JSON, or an unknown field (400).
+    Malformed,
+    /// JSON of the right shape whose values are wrong or that cannot be solved (422).
+    Invalid,
+}
+
+/// A rejected input, naming the field at fault where there is one.
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema, thiserror::Error)]
+#[error("{message}")]
+pub struct InputError {
+    #[serde(skip)]
+    pub kind: ErrorKind,
+    /// Stable machine-readable code, e.g. `invalid_value`, `unknown_field`.
+    pub code: &'static str,
+    pub message: String,
+    /// Path of the field at fault, e.g. `runs[2].readings[5].phase_deg`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub field: Option<String>,
+}
+
+impl InputError {
+    /// A value error (422) at `field`.
+    pub fn invalid(code: &'static str, field: impl Into<String>, message: impl Into<String>) -> Self {
+        InputError {
+            kind: ErrorKind::Invalid,
+            code,
+            message: message.into(),
+            field: Some(field.into()),
+        }
+    }
+
+    /// A value error (422) that no single field is at fault for.
+    pub fn unsolvable(code: &'static str, message: impl Into<String>) -> Self {
+        InputError {
+            kind: ErrorKind::Invalid,
+            code,
+            message: message.into(),
+            field: None,
+        }
+    }
+
+    /// Prefix the field path, e.g. `session.` for a session inside a solve request.
+    pub fn under(mut self, prefix: &str) -> Self {
+        self.field = Some(match self.field.take() {
+            Some(f) if f.starts_with('[') => format!("{prefix}{f}"),
+            Some(f) => format!("{prefix}.{f}"),
+            None => prefix.to_string(),
+        });
+        self
+    }
+
+    /// The contract's error body.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({ "error": self })
+    }
+}
+
+/// Parse JSON into `T`, turning serde's error into an [`InputError`] whose
+/// `field` is the path of the offending value (for an unknown field, the path of
+/// the unknown field itself, so that `phase_dg` is named).
+pub fn from_json<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
+    let de = &mut serde_json::Deserializer::from_slice(bytes);
+    let value = serde_path_to_error::deserialize(de).map_err(|err| {
+        let path = err.path().to_string();
+        let inner = err.into_inner();
+        let path = if path == "." { String::new() } else { path };
+        classify(path, &inner)
+    })?;
+    Ok(value)
+}
+
+fn classify(path: String, err: &serde_json::Error) -> InputError {
+    use serde_json::error::Category;
+    let text = err.to_string();
+    let message = strip_position(&text);
+    match err.classify() {
+        Category::Syntax | Category::Eof | Category::Io => InputError {
+            kind: ErrorKind::Malformed,
+            code: "malformed_json",
+            message: format!("the body is not valid JSON: {text}"),
+            field: None,
+        },
+        Category::Data if message.starts_with("unknown field") => {
+            let name = message.split('`').nth(1).unwrap_or_default();
+            let field = match (path.is_empty(), name.is_empty()) {
+                (_, true) => path,
+                (true, false) => name.to_string(),
+                (false, false) => format!("{path}.{name}"),
+            };
+            InputError {
+                kind: ErrorKind::Malformed,
+                code: "unknown_field",
+                message: message.to_string(),
+                field: Some(field),
+            }
+        }
+        Category::Data => {
+            let (code, field) = match message.strip_prefix("missing field `") {
+                Some(rest) => {
+                    let name = rest.split('`').next().unwrap_or_default();
+                    let field = if path.is_empty() {
+                        name.to_string()
+                    } else {
+                        format!("{path}.{name}")
+                    };
+                    ("missing_field", field)
+                }
+                None => ("invalid_type", path),
+            };
+            InputError {
+                kind: ErrorKind::Invalid,
+                code,
+                message: message.to_string(),
+                field: if field.is_empty() { None } else { Some(field) },
+            }
+        }
+    }
+}
+
+/// serde_json appends " at line L column C"; the field path says more.
+fn strip_position(text: &str) -> &str {
+    match text.rfind(" at line ") {
+        Some(i) => &text[..i],
+        None => text,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::balancing::model::Session;
+
+    #[test]
+    fn an_unknown_field_is_named_by_its_full_path() {
+        let body = br#"{"name":"x","planes":[],"sensors":[],"runs":[{"id":"z","weights":[],
+            "readings":[{"speed_rpm":1,"sensor":"s","amplitude":1,"phase_dg":3}]}]}"#;
+        let err = from_json::<Session>(body).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Malformed);
+        assert_eq!(err.code, "unknown_field");
+        assert_eq!(err.field.as_deref(), Some("runs[0].readings[0].phase_dg"));
+    }
+
+    #[test]
+    fn a_string_where_a_number_belongs_names_the_field() {
+        let body = br#"{"name":"x","planes":[{"id":"A","radius_mm":"NaN"}],"sensors":[],"runs":[]}"#;
+        let err = from_json::<Session>(body).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Invalid);
+        assert_eq!(err.field.as_deref(), Some("planes[0].radius_mm"));
+    }
+
+    #[test]
+    fn a_missing_field_is_named() {
+        let body = br#"{"name":"x","planes":[],"sensors":[{"id":"s"}],"runs":[]}"#;
+        let err = from_json::<Session>(body).unwrap_err();
+        assert_eq!(err.code, "missing_field");
+        assert_eq!(err.field.as_deref(), Some("sensors[0].unit"));
+    }
+
+    #[test]
+    fn broken_json_is_malformed() {
+        let err = from_json::<Session>(b"{\"name\": ").unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Malformed);
+        assert_eq!(err.code, "malformed_json");
+    }
+}

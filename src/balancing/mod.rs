@@ -1,0 +1,58 @@
+//! The balancing core: pure functions from a recorded session to corrections.
+//! No HTTP, no database, no async in here.
+//!
+//! Conventions (docs/method.md §1): inside the core every 1X reading is a complex
+//! phasor `Y` with `x(t) = Re(Y e^{iωt})` (phase lead) and every weight angle is
+//! counted with rotation, so a weight is `m e^{iθ}` and the response is
+//! complex-linear in it. The session's own conventions are applied only when
+//! values enter (`phasor`) and leave (`solution`).
+
+pub mod error;
+pub mod model;
+pub mod solution;
+
+pub use error::{from_json, ErrorKind, InputError};
+pub use model::{SolveOptions, SolveRequest, Session};
+pub use solution::Solution;
+
+/// Parse and validate a session posted as JSON.
+pub fn parse_session(bytes: &[u8]) -> Result<Session, InputError> {
+    let session: Session = from_json(bytes)?;
+    validate_session(&session)?;
+    Ok(session)
+}
+
+/// A session file as `fieldbal solve` reads it: a bare session, or the
+/// examples' wrapper `{"session", "options", "description", "expected"}`.
+pub fn parse_session_file(bytes: &[u8]) -> Result<(Session, SolveOptions), InputError> {
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Wrapper {
+        session: Session,
+        #[serde(default)]
+        options: SolveOptions,
+        #[serde(default, rename = "description")]
+        _description: Option<String>,
+        #[serde(default, rename = "expected")]
+        _expected: Option<serde_json::Value>,
+    }
+    let value: serde_json::Value = from_json(bytes)?;
+    if value.get("session").is_some() {
+        let w: Wrapper = from_json(bytes)?;
+        validate_session(&w.session).map_err(|e| e.under("session"))?;
+        Ok((w.session, w.options))
+    } else {
+        Ok((parse_session(bytes)?, SolveOptions::default()))
+    }
+}
+
+/// Check a session against the contract (everything but solvability: a stored
+/// session may still lack trial runs).
+pub fn validate_session(_session: &Session) -> Result<(), InputError> {
+    Ok(())
+}
+
+/// Solve a session with options.
+pub fn solve(_session: &Session, _options: &SolveOptions) -> Result<Solution, InputError> {
+    Err(InputError::unsolvable("not_implemented", "solver not written yet"))
+}

@@ -1,0 +1,203 @@
+//! The wire model of a balancing session and of solve options
+//! (`docs/session-format.md`), exactly as it is posted and read back.
+//!
+//! These types only describe the JSON shape (unknown fields are rejected);
+//! `validate` turns them into checked types. Optional fields stay `Option`
+//! so that a session reads back exactly as it was posted.
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+/// How the instrument reports the phase of the 1X vibration (method §1, 1.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PhaseConvention {
+    /// Phase lag after the once-per-revolution mark (most analysers).
+    #[default]
+    Lag,
+    /// Phase lead.
+    Lead,
+}
+
+/// Direction in which weight angles are counted from the reference mark (method §1, 1.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum AngleDirection {
+    #[default]
+    AgainstRotation,
+    WithRotation,
+}
+
+/// The session's angle conventions; every angle in requests and responses uses them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Conventions {
+    #[serde(default)]
+    pub phase: PhaseConvention,
+    #[serde(default)]
+    pub angle_direction: AngleDirection,
+}
+
+/// Rotor data for the ISO 21940-11 tolerance (method §5.2).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Rotor {
+    pub mass_kg: f64,
+    pub service_speed_rpm: f64,
+    /// One of G0.4, G1, G2.5, G6.3, G16, G40, G100, G250, G630, G1600, G4000.
+    pub balance_grade: String,
+}
+
+/// A correction plane.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Plane {
+    pub id: String,
+    /// Radius at which weights are fitted, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius_mm: Option<f64>,
+    /// Number of equally spaced fixed places (2 or more), place 0 at angle 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub positions: Option<u32>,
+}
+
+/// Unit of a sensor's amplitudes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Unit {
+    UmPp,
+    MilsPp,
+    MmSRms,
+    MmSPk,
+    InSPk,
+    GPk,
+}
+
+/// A vibration sensor.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Sensor {
+    pub id: String,
+    pub unit: Unit,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub label: Option<String>,
+}
+
+/// A weight on the rotor during a run, relative to the reference state.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Weight {
+    pub plane: String,
+    pub mass_g: f64,
+    /// In the session's `angle_direction`, degrees from the reference mark.
+    pub angle_deg: f64,
+}
+
+/// One repeated 1X sample of a reading.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Sample {
+    pub amplitude: f64,
+    pub phase_deg: f64,
+}
+
+/// One 1X reading of one sensor at one speed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Reading {
+    pub speed_rpm: f64,
+    pub sensor: String,
+    /// In the sensor's unit.
+    pub amplitude: f64,
+    /// In the session's `phase` convention, degrees.
+    pub phase_deg: f64,
+    /// Repeated 1X readings of this point; `amplitude`/`phase_deg` are their mean.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub samples: Option<Vec<Sample>>,
+}
+
+/// A run: the weights on the rotor and the readings taken.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Run {
+    pub id: String,
+    /// All weights on the rotor during the run; empty for the reference run.
+    pub weights: Vec<Weight>,
+    pub readings: Vec<Reading>,
+}
+
+/// A balancing session (`docs/session-format.md`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Session {
+    pub name: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub machine: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conventions: Option<Conventions>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rotor: Option<Rotor>,
+    pub planes: Vec<Plane>,
+    pub sensors: Vec<Sensor>,
+    pub runs: Vec<Run>,
+}
+
+/// What the correction minimises.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Objective {
+    /// Sum of squared residual amplitudes over the selected rows.
+    #[default]
+    LeastSquares,
+    /// Largest residual amplitude over the selected rows.
+    MinMax,
+}
+
+/// A weight on the rows that match a sensor, a speed, or both.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RowWeight {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensor: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speed_rpm: Option<f64>,
+    pub weight: f64,
+}
+
+/// Solve options; all optional.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SolveOptions {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speeds_rpm: Option<Vec<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensors: Option<Vec<String>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub planes: Option<Vec<String>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub objective: Option<Objective>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub row_weights: Option<Vec<RowWeight>>,
+    /// Upper bound on the correction mass per plane id, grams.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_mass_g: Option<BTreeMap<String, f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drop_dependent_planes: Option<bool>,
+    /// 1X amplitude repeatability, percent of the reading (default 2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub amplitude_noise_pct: Option<f64>,
+    /// 1X phase repeatability, degrees (default 2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub phase_noise_deg: Option<f64>,
+}
+
+/// The body of `POST /api/v1/solve`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SolveRequest {
+    pub session: Session,
+    #[serde(default)]
+    pub options: SolveOptions,
+}

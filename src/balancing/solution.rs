@@ -1,0 +1,154 @@
+//! The solution as the contract describes it, plus added fields.
+//!
+//! Every angle here is in the session's conventions, echoed in `conventions`:
+//! correction and weight angles in its `angle_direction`, vibration phases in
+//! its `phase` convention.
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::model::{Conventions, Objective, Unit};
+
+/// One part of a correction split over two neighbouring fixed places (method 5.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct SplitPart {
+    /// Place number, 0 at angle 0.
+    pub position: u32,
+    pub angle_deg: f64,
+    pub mass_g: f64,
+}
+
+/// 95 % confidence region of a correction.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Uncertainty {
+    /// 95 % interval of the mass, g.
+    pub mass_g: [f64; 2],
+    /// 95 % interval of the angle, degrees (the upper end may exceed 360 when it wraps).
+    pub angle_deg: [f64; 2],
+    /// Covariance of the correction's real and imaginary parts, g², with the
+    /// real axis at angle 0 and the imaginary axis at 90° in the session's `angle_direction`.
+    pub covariance_g2: [[f64; 2]; 2],
+}
+
+/// The correction weight for one plane.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Correction {
+    pub plane: String,
+    pub mass_g: f64,
+    /// Where to fit the weight, in the session's `angle_direction`.
+    pub angle_deg: f64,
+    /// `mass_g · radius_mm`, when the plane has a radius.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unbalance_gmm: Option<f64>,
+    /// The correction split over the two neighbouring fixed places, when the plane has `positions`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub split: Option<Vec<SplitPart>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub uncertainty: Option<Uncertainty>,
+}
+
+/// Vibration expected after the corrections at one sensor and speed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Residual {
+    pub speed_rpm: f64,
+    pub sensor: String,
+    pub unit: Unit,
+    /// Amplitude as found (reference run), in the sensor's unit.
+    pub amplitude_before: f64,
+    /// Predicted amplitude after correction, in the sensor's unit.
+    pub amplitude: f64,
+    /// In the session's `phase` convention.
+    pub phase_deg: f64,
+    /// 95 % upper bound of the predicted amplitude.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_95: Option<f64>,
+    /// Whether this row was part of the fit (selected by `speeds_rpm`/`sensors`, weight > 0).
+    pub used: bool,
+}
+
+/// Experimental influence coefficient: the 1X vibration caused by 1 g at angle 0 of a plane.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct InfluenceCoefficient {
+    pub speed_rpm: f64,
+    pub sensor: String,
+    pub plane: String,
+    /// Sensor unit per gram.
+    pub amplitude_per_g: f64,
+    /// Phase of that vibration, in the session's `phase` convention.
+    pub phase_deg: f64,
+}
+
+/// Before/after amplitudes over the rows used in the fit.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Summary {
+    pub rms_before: f64,
+    pub rms_after: f64,
+    pub max_before: f64,
+    pub max_after: f64,
+}
+
+/// Per-plane diagnostics behind the warnings.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct PlaneDiagnostics {
+    pub plane: String,
+    /// Darlow's significance factor (0..1): the part of the plane's normalised
+    /// influence column independent of the more significant planes. Below 0.2 the
+    /// plane is nearly dependent.
+    pub significance_factor: f64,
+    /// Largest change the trial weight caused at any used row, relative to that
+    /// row's reference amplitude (|ΔY|/|Y0|). Field practice asks for at least 0.3.
+    pub trial_effect_ratio: f64,
+    /// Largest trial effect relative to its standard deviation from reading noise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trial_effect_snr: Option<f64>,
+    /// Whether the plane was left out of the solve by `drop_dependent_planes`.
+    pub dropped: bool,
+}
+
+/// ISO 21940-11 permissible residual unbalance (method 5.2).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct IsoTolerance {
+    pub balance_grade: String,
+    /// `U_per = 9549 · G · m / n`, g·mm, for the whole rotor.
+    pub permissible_residual_unbalance_gmm: f64,
+    /// `U_per` shared equally over the correction planes, g·mm.
+    pub permissible_per_plane_gmm: f64,
+    /// Estimated unbalance as found per plane (|correction| · radius), g·mm, when every plane has a radius.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub as_found_unbalance_gmm: Option<Vec<f64>>,
+    /// Whether the rotor as found was already within the tolerance in every plane.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub as_found_within_tolerance: Option<bool>,
+}
+
+/// A condition the technician should know about.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Warning {
+    /// `trial_effect_small`, `ill_conditioned`, `mass_limit_active`, `mixed_units`, …
+    pub code: String,
+    /// Plain words, with what to do.
+    pub message: String,
+    /// The plane concerned, if one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plane: Option<String>,
+}
+
+/// The answer to a solve.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Solution {
+    pub corrections: Vec<Correction>,
+    pub predicted_residual: Vec<Residual>,
+    pub influence_coefficients: Vec<InfluenceCoefficient>,
+    pub summary: Summary,
+    /// cond(W) of the used rows and planes after scaling columns to unit norm.
+    pub condition_number: f64,
+    pub warnings: Vec<Warning>,
+    /// The conventions every angle in this solution uses.
+    pub conventions: Conventions,
+    pub objective: Objective,
+    pub planes: Vec<PlaneDiagnostics>,
+    /// Planes left out by `drop_dependent_planes`.
+    pub dropped_planes: Vec<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub iso_21940: Option<IsoTolerance>,
+}

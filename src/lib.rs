@@ -1,0 +1,13 @@
+//! fieldbal: field balancing of rotors by experimental influence coefficients.
+//!
+//! - [`balancing`]: the pure core (session model, validation, influence
+//!   coefficients, least-squares and min-max corrections, uncertainty).
+//! - [`http`]: the REST service and the embedded web form.
+//! - [`cli`]: `fieldbal serve` and `fieldbal solve`.
+//!
+//! Angle conventions are the session's own at every edge (phase `lag`/`lead`,
+//! weight angles `against_rotation`/`with_rotation`); see `balancing`.
+
+pub mod balancing;
+pub mod cli;
+pub mod http;

@@ -1,0 +1,61 @@
+//! Experimental influence coefficients from any run sequence (method §2):
+//! `ΔY = W T`, so `W = ΔY T⁺`, through the SVD of `T`.
+
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+
+use super::error::InputError;
+use super::validate::Checked;
+
+/// Relative singular value below which the trial weights count as dependent.
+const RANK_TOLERANCE: f64 = 1e-9;
+
+/// `ΔY = Y_r − Y_0 1ᵀ` (method 2.1), rows × trial runs.
+pub fn changes(checked: &Checked) -> DMatrix<Complex64> {
+    let y0 = checked.y.column(0).clone_owned();
+    let mut dy = checked.y.columns(1, checked.y.ncols() - 1).clone_owned();
+    for mut col in dy.column_iter_mut() {
+        col -= &y0;
+    }
+    dy
+}
+
+/// The influence matrix `W` (rows × planes, vibration per gram at angle 0 in the
+/// internal frame), or an error saying which planes lack an independent trial.
+pub fn influence_matrix(checked: &Checked) -> Result<DMatrix<Complex64>, InputError> {
+    let session = checked.session;
+    let t = &checked.t;
+    let (planes, trials) = t.shape();
+    if trials < planes {
+        return Err(InputError::invalid(
+            "too_few_trial_runs",
+            "runs",
+            format!(
+                "{planes} correction planes need at least {planes} trial runs, one independent trial per plane; the session has {trials}"
+            ),
+        ));
+    }
+    let svd = t.clone().svd(true, true);
+    let smax = svd.singular_values.max();
+    let weak: Vec<usize> = (0..planes).filter(|&k| svd.singular_values[k] <= RANK_TOLERANCE * smax).collect();
+    if smax == 0.0 || !weak.is_empty() {
+        // Left singular vectors of the zero singular values show the planes whose
+        // trials cannot be told apart.
+        let u = svd.u.as_ref().expect("SVD computed with U");
+        let mut involved: Vec<&str> = (0..planes)
+            .filter(|&j| weak.iter().any(|&k| u[(j, k)].norm() > 1e-6) || smax == 0.0)
+            .map(|j| session.planes[j].id.as_str())
+            .collect();
+        involved.dedup();
+        return Err(InputError::invalid(
+            "dependent_trials",
+            "runs",
+            format!(
+                "the trial weights do not give every plane an independent trial: plane(s) {} cannot be told apart; add a run with a trial weight in one of them alone",
+                involved.join(", ")
+            ),
+        ));
+    }
+    let t_pinv = svd.pseudo_inverse(0.0).map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
+    Ok(changes(checked) * t_pinv)
+}

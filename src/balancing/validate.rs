@@ -1,0 +1,330 @@
+//! Validation: a wire `Session` becomes a `Checked` session whose readings are
+//! paired into rows and turned into internal phasors, or an error naming the field.
+//!
+//! Everything the contract requires is checked here except solvability (the rank
+//! of the trial weights), which `influence` checks when solving, because a stored
+//! session may still be waiting for its trial runs.
+
+use std::collections::{HashMap, HashSet};
+
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+
+use super::error::InputError;
+use super::model::{Conventions, Reading, Session};
+use super::phasor::{reading_in, weight_in};
+
+/// Speeds closer than this (relative) are the same speed point (contract).
+pub const SPEED_TOLERANCE: f64 = 0.01;
+const MAX_SPEED_RPM: f64 = 1e6;
+const MAX_AMPLITUDE: f64 = 1e9;
+const MAX_MASS_G: f64 = 1e7;
+const MAX_RADIUS_MM: f64 = 1e5;
+const MAX_ANGLE_DEG: f64 = 1e6;
+const MAX_TEXT: usize = 200;
+/// ISO 21940-11 balance grades G, mm/s (method 5.2).
+pub const GRADES: [&str; 11] = [
+    "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
+];
+
+/// One (speed point, sensor) pair measured in the reference run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// Index into `Checked::points`.
+    pub point: usize,
+    /// Index into `session.sensors`.
+    pub sensor: usize,
+    /// Speed of the reference reading, rpm.
+    pub speed_rpm: f64,
+    /// For each run of `Checked::runs`, the index of its reading in `runs[r].readings`.
+    pub readings: Vec<usize>,
+}
+
+/// A session that passed validation, in the internal frame.
+#[derive(Debug, Clone)]
+pub struct Checked<'a> {
+    pub session: &'a Session,
+    pub conventions: Conventions,
+    /// Speed points: the reference run's speeds, clustered within 1 %, ascending.
+    /// Each point is the list of reference speeds that fall in it.
+    pub points: Vec<Vec<f64>>,
+    /// Rows ordered by speed point, then by sensor as listed in the session.
+    pub rows: Vec<Row>,
+    /// Indices into `session.runs`: the reference run first, then the trial runs in order.
+    pub runs: Vec<usize>,
+    /// Readings, rows × runs (column 0 is the reference `Y0`), internal phasors.
+    pub y: DMatrix<Complex64>,
+    /// Weights, planes × trial runs (`T` of method 2.1), internal frame, grams.
+    pub t: DMatrix<Complex64>,
+}
+
+impl Checked<'_> {
+    /// The index of the speed point `speed` falls in, if any.
+    pub fn point_of(&self, speed: f64) -> Option<usize> {
+        nearest_point(&self.points, speed)
+    }
+
+    /// The reading of run `k` (index into `self.runs`) for row `a`.
+    pub fn reading(&self, a: usize, k: usize) -> &Reading {
+        &self.session.runs[self.runs[k]].readings[self.rows[a].readings[k]]
+    }
+}
+
+fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {
+    InputError::invalid("invalid_value", field, message)
+}
+
+fn check_id(field: &str, id: &str) -> Result<(), InputError> {
+    let n = id.chars().count();
+    if n == 0 || n > 64 {
+        return Err(invalid(field, format!("ids are 1 to 64 characters; this one has {n}")));
+    }
+    Ok(())
+}
+
+fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError> {
+    if required && text.trim().is_empty() {
+        return Err(invalid(field, "must not be empty"));
+    }
+    if text.chars().count() > MAX_TEXT {
+        return Err(invalid(field, format!("at most {MAX_TEXT} characters")));
+    }
+    Ok(())
+}
+
+/// A finite number in `(0, max]` (or `[0, max]` when `zero_ok`).
+fn check_positive(field: &str, x: f64, max: f64, zero_ok: bool, what: &str) -> Result<(), InputError> {
+    if !x.is_finite() {
+        return Err(invalid(field, format!("{what} must be a finite number")));
+    }
+    if x < 0.0 || (x == 0.0 && !zero_ok) {
+        let bound = if zero_ok { "0 or more" } else { "greater than 0" };
+        return Err(invalid(field, format!("{what} must be {bound}, got {x}")));
+    }
+    if x > max {
+        return Err(invalid(field, format!("{what} of {x} is beyond the plausible limit of {max}")));
+    }
+    Ok(())
+}
+
+fn check_angle(field: &str, x: f64) -> Result<(), InputError> {
+    if !x.is_finite() || x.abs() > MAX_ANGLE_DEG {
+        return Err(invalid(field, format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}")));
+    }
+    Ok(())
+}
+
+/// Index of an id in a list, checking uniqueness of the list as it goes.
+fn unique_ids<'s>(field: &str, ids: impl Iterator<Item = &'s str>) -> Result<HashMap<&'s str, usize>, InputError> {
+    let mut seen = HashMap::new();
+    for (i, id) in ids.enumerate() {
+        let f = format!("{field}[{i}].id");
+        check_id(&f, id)?;
+        if seen.insert(id, i).is_some() {
+            return Err(InputError::invalid("duplicate_id", f, format!("the id '{id}' is used twice")));
+        }
+    }
+    Ok(seen)
+}
+
+/// Cluster sorted speeds: a new point starts where a speed is more than 1 % above the point's lowest.
+fn cluster_speeds(mut speeds: Vec<f64>) -> Vec<Vec<f64>> {
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    let mut points: Vec<Vec<f64>> = Vec::new();
+    for s in speeds {
+        match points.last_mut() {
+            Some(p) if s <= p[0] * (1.0 + SPEED_TOLERANCE) => p.push(s),
+            _ => points.push(vec![s]),
+        }
+    }
+    points
+}
+
+/// The point with a member speed within 1 % of `speed`, the nearest one if several.
+fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
+    let mut best: Option<(usize, f64)> = None;
+    for (p, members) in points.iter().enumerate() {
+        for &m in members {
+            let rel = (speed - m).abs() / m;
+            if rel <= SPEED_TOLERANCE * (1.0 + 1e-12) && best.is_none_or(|(_, r)| rel < r) {
+                best = Some((p, rel));
+            }
+        }
+    }
+    best.map(|(p, _)| p)
+}
+
+fn check_setup(session: &Session) -> Result<(HashMap<&str, usize>, HashMap<&str, usize>), InputError> {
+    check_text("name", &session.name, true)?;
+    if let Some(m) = &session.machine {
+        check_text("machine", m, false)?;
+    }
+    if let Some(r) = &session.rotor {
+        check_positive("rotor.mass_kg", r.mass_kg, 1e7, false, "the rotor mass")?;
+        check_positive("rotor.service_speed_rpm", r.service_speed_rpm, MAX_SPEED_RPM, false, "the service speed")?;
+        if !GRADES.contains(&r.balance_grade.as_str()) {
+            return Err(invalid(
+                "rotor.balance_grade",
+                format!("'{}' is not an ISO 21940-11 grade; use one of {}", r.balance_grade, GRADES.join(", ")),
+            ));
+        }
+    }
+    if session.planes.is_empty() {
+        return Err(invalid("planes", "at least one correction plane is needed"));
+    }
+    let planes = unique_ids("planes", session.planes.iter().map(|p| p.id.as_str()))?;
+    for (i, p) in session.planes.iter().enumerate() {
+        if let Some(r) = p.radius_mm {
+            check_positive(&format!("planes[{i}].radius_mm"), r, MAX_RADIUS_MM, false, "the radius")?;
+        }
+        if let Some(n) = p.positions {
+            if !(2..=3600).contains(&n) {
+                return Err(invalid(format!("planes[{i}].positions"), format!("2 to 3600 fixed places, got {n}")));
+            }
+        }
+    }
+    if session.sensors.is_empty() {
+        return Err(invalid("sensors", "at least one sensor is needed"));
+    }
+    let sensors = unique_ids("sensors", session.sensors.iter().map(|s| s.id.as_str()))?;
+    for (i, s) in session.sensors.iter().enumerate() {
+        if let Some(l) = &s.label {
+            check_text(&format!("sensors[{i}].label"), l, false)?;
+        }
+    }
+    Ok((planes, sensors))
+}
+
+fn check_reading(f: &str, r: &Reading, sensors: &HashMap<&str, usize>) -> Result<usize, InputError> {
+    check_positive(&format!("{f}.speed_rpm"), r.speed_rpm, MAX_SPEED_RPM, false, "the speed")?;
+    let sensor = *sensors
+        .get(r.sensor.as_str())
+        .ok_or_else(|| InputError::invalid("unknown_sensor", format!("{f}.sensor"), format!("no sensor has the id '{}'", r.sensor)))?;
+    check_positive(&format!("{f}.amplitude"), r.amplitude, MAX_AMPLITUDE, true, "the amplitude")?;
+    check_angle(&format!("{f}.phase_deg"), r.phase_deg)?;
+    if let Some(samples) = &r.samples {
+        if samples.len() < 2 {
+            return Err(invalid(format!("{f}.samples"), "give at least 2 samples, or leave the list out"));
+        }
+        for (k, s) in samples.iter().enumerate() {
+            check_positive(&format!("{f}.samples[{k}].amplitude"), s.amplitude, MAX_AMPLITUDE, true, "the amplitude")?;
+            check_angle(&format!("{f}.samples[{k}].phase_deg"), s.phase_deg)?;
+        }
+    }
+    Ok(sensor)
+}
+
+/// Validate a session and bring it into the internal frame.
+pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
+    let conventions = session.conventions.unwrap_or_default();
+    let (planes, sensors) = check_setup(session)?;
+    unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
+
+    // Per-field checks of every run, and the reference run.
+    let mut reference = None;
+    let mut sensor_of: Vec<Vec<usize>> = Vec::with_capacity(session.runs.len());
+    for (i, run) in session.runs.iter().enumerate() {
+        for (j, w) in run.weights.iter().enumerate() {
+            let f = format!("runs[{i}].weights[{j}]");
+            if !planes.contains_key(w.plane.as_str()) {
+                return Err(InputError::invalid("unknown_plane", format!("{f}.plane"), format!("no plane has the id '{}'", w.plane)));
+            }
+            check_positive(&format!("{f}.mass_g"), w.mass_g, MAX_MASS_G, false, "the mass")?;
+            check_angle(&format!("{f}.angle_deg"), w.angle_deg)?;
+        }
+        let s = run
+            .readings
+            .iter()
+            .enumerate()
+            .map(|(j, r)| check_reading(&format!("runs[{i}].readings[{j}]"), r, &sensors))
+            .collect::<Result<Vec<_>, _>>()?;
+        sensor_of.push(s);
+        if run.weights.is_empty() {
+            if let Some(first) = reference {
+                return Err(InputError::invalid(
+                    "second_reference_run",
+                    format!("runs[{i}].weights"),
+                    format!("run '{}' has no weights, like run '{}': exactly one run is the reference (zero) run; list every weight on the rotor in the others", run.id, session.runs[first].id),
+                ));
+            }
+            reference = Some(i);
+        }
+    }
+    let Some(reference) = reference else {
+        return Err(InputError::invalid("no_reference_run", "runs", "no reference run: exactly one run must have an empty weights list (the rotor as found)"));
+    };
+    let ref_run = &session.runs[reference];
+    if ref_run.readings.is_empty() {
+        return Err(invalid(format!("runs[{reference}].readings"), "the reference run needs at least one reading"));
+    }
+
+    let points = cluster_speeds(ref_run.readings.iter().map(|r| r.speed_rpm).collect());
+    let runs: Vec<usize> = std::iter::once(reference).chain((0..session.runs.len()).filter(|&i| i != reference)).collect();
+
+    // Pair readings: (point, sensor) -> reading index, per run.
+    let mut paired: Vec<HashMap<(usize, usize), usize>> = Vec::with_capacity(runs.len());
+    for &i in &runs {
+        let mut map = HashMap::new();
+        for (j, r) in session.runs[i].readings.iter().enumerate() {
+            let f = format!("runs[{i}].readings[{j}]");
+            let point = nearest_point(&points, r.speed_rpm).ok_or_else(|| {
+                InputError::invalid("unpaired_reading", format!("{f}.speed_rpm"), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
+            })?;
+            let sensor = sensor_of[i][j];
+            if let Some(k) = map.insert((point, sensor), j) {
+                return Err(InputError::invalid(
+                    "duplicate_reading",
+                    f,
+                    format!("run '{}' already has a reading of sensor '{}' at this speed (readings[{k}]); put repeated readings in `samples`", session.runs[i].id, r.sensor),
+                ));
+            }
+        }
+        paired.push(map);
+    }
+
+    let mut keys: Vec<(usize, usize)> = paired[0].keys().copied().collect();
+    keys.sort_unstable();
+    let mut rows = Vec::with_capacity(keys.len());
+    for (point, sensor) in keys {
+        let mut readings = Vec::with_capacity(runs.len());
+        for (k, &i) in runs.iter().enumerate() {
+            match paired[k].get(&(point, sensor)) {
+                Some(&j) => readings.push(j),
+                None => {
+                    let speed = ref_run.readings[paired[0][&(point, sensor)]].speed_rpm;
+                    return Err(InputError::invalid(
+                        "missing_reading",
+                        format!("runs[{i}].readings"),
+                        format!("run '{}' has no reading of sensor '{}' at {speed} rpm, which the reference run has", session.runs[i].id, session.sensors[sensor].id),
+                    ));
+                }
+            }
+        }
+        // A trial reading of a sensor/speed the reference lacks cannot be paired either.
+        let speed_rpm = ref_run.readings[readings[0]].speed_rpm;
+        rows.push(Row { point, sensor, speed_rpm, readings });
+    }
+    for (k, &i) in runs.iter().enumerate().skip(1) {
+        let used: HashSet<usize> = rows.iter().map(|r| r.readings[k]).collect();
+        if let Some(j) = (0..session.runs[i].readings.len()).find(|j| !used.contains(j)) {
+            return Err(InputError::invalid(
+                "unpaired_reading",
+                format!("runs[{i}].readings[{j}]"),
+                "the reference run has no reading of this sensor at this speed to pair this one with",
+            ));
+        }
+    }
+
+    let y = DMatrix::from_fn(rows.len(), runs.len(), |a, k| {
+        let r = &session.runs[runs[k]].readings[rows[a].readings[k]];
+        reading_in(conventions, r.amplitude, r.phase_deg)
+    });
+    let mut t = DMatrix::zeros(session.planes.len(), runs.len() - 1);
+    for (k, &i) in runs.iter().enumerate().skip(1) {
+        for w in &session.runs[i].weights {
+            t[(planes[w.plane.as_str()], k - 1)] += weight_in(conventions, w.mass_g, w.angle_deg);
+        }
+    }
+    Ok(Checked { session, conventions, points, rows, runs, y, t })
+}

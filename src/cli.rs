@@ -8,7 +8,11 @@ use clap::{Parser, Subcommand};
 use crate::balancing::{self, InputError, SolveOptions};
 
 #[derive(Debug, Parser)]
-#[command(name = "fieldbal", version, about = "Field balancing of rotors by influence coefficients")]
+#[command(
+    name = "fieldbal",
+    version,
+    about = "Field balancing of rotors by influence coefficients"
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -38,11 +42,17 @@ pub fn run(cli: Cli) -> ExitCode {
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {
     match solve_file_inner(file, options) {
         Ok(solution) => {
-            println!("{}", serde_json::to_string_pretty(&solution).expect("solution serialises"));
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&solution).expect("solution serialises")
+            );
             ExitCode::SUCCESS
         }
         Err(err) => {
-            println!("{}", serde_json::to_string_pretty(&err.to_json()).expect("error serialises"));
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&err.to_json()).expect("error serialises")
+            );
             ExitCode::from(2)
         }
     }
@@ -63,7 +73,8 @@ fn solve_file_inner(
 ) -> Result<balancing::Solution, InputError> {
     let (session, mut opts) = balancing::parse_session_file(&read(file)?)?;
     if let Some(path) = options {
-        opts = balancing::from_json::<SolveOptions>(&read(path)?).map_err(|e| e.under("options"))?;
+        opts =
+            balancing::from_json::<SolveOptions>(&read(path)?).map_err(|e| e.under("options"))?;
     }
     balancing::solve(&session, &opts)
 }

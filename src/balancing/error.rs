@@ -31,7 +31,11 @@ pub struct InputError {
 
 impl InputError {
     /// A value error (422) at `field`.
-    pub fn invalid(code: &'static str, field: impl Into<String>, message: impl Into<String>) -> Self {
+    pub fn invalid(
+        code: &'static str,
+        field: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
         InputError {
             kind: ErrorKind::Invalid,
             code,
@@ -93,10 +97,11 @@ fn classify(path: String, err: &serde_json::Error) -> InputError {
         },
         Category::Data if message.starts_with("unknown field") => {
             let name = message.split('`').nth(1).unwrap_or_default();
-            let field = match (path.is_empty(), name.is_empty()) {
-                (_, true) => path,
-                (true, false) => name.to_string(),
-                (false, false) => format!("{path}.{name}"),
+            // serde_path_to_error already ends the path with the unknown key.
+            let field = if path.is_empty() {
+                name.to_string()
+            } else {
+                path
             };
             InputError {
                 kind: ErrorKind::Malformed,
@@ -153,7 +158,8 @@ mod tests {
 
     #[test]
     fn a_string_where_a_number_belongs_names_the_field() {
-        let body = br#"{"name":"x","planes":[{"id":"A","radius_mm":"NaN"}],"sensors":[],"runs":[]}"#;
+        let body =
+            br#"{"name":"x","planes":[{"id":"A","radius_mm":"NaN"}],"sensors":[],"runs":[]}"#;
         let err = from_json::<Session>(body).unwrap_err();
         assert_eq!(err.kind, ErrorKind::Invalid);
         assert_eq!(err.field.as_deref(), Some("planes[0].radius_mm"));

@@ -37,7 +37,9 @@ pub fn influence_matrix(checked: &Checked) -> Result<DMatrix<Complex64>, InputEr
     }
     let svd = t.clone().svd(true, true);
     let smax = svd.singular_values.max();
-    let weak: Vec<usize> = (0..planes).filter(|&k| svd.singular_values[k] <= RANK_TOLERANCE * smax).collect();
+    let weak: Vec<usize> = (0..planes)
+        .filter(|&k| svd.singular_values[k] <= RANK_TOLERANCE * smax)
+        .collect();
     if smax == 0.0 || !weak.is_empty() {
         // Left singular vectors of the zero singular values show the planes whose
         // trials cannot be told apart.
@@ -56,6 +58,8 @@ pub fn influence_matrix(checked: &Checked) -> Result<DMatrix<Complex64>, InputEr
             ),
         ));
     }
-    let t_pinv = svd.pseudo_inverse(0.0).map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
+    let t_pinv = svd
+        .pseudo_inverse(0.0)
+        .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
     Ok(changes(checked) * t_pinv)
 }

@@ -8,11 +8,15 @@
 //! values enter (`phasor`) and leave (`solution`).
 
 pub mod error;
+pub mod influence;
 pub mod model;
+pub mod phasor;
+pub mod practical;
 pub mod solution;
+pub mod validate;
 
 pub use error::{from_json, ErrorKind, InputError};
-pub use model::{SolveOptions, SolveRequest, Session};
+pub use model::{Session, SolveOptions, SolveRequest};
 pub use solution::Solution;
 
 /// Parse and validate a session posted as JSON.
@@ -48,11 +52,14 @@ pub fn parse_session_file(bytes: &[u8]) -> Result<(Session, SolveOptions), Input
 
 /// Check a session against the contract (everything but solvability: a stored
 /// session may still lack trial runs).
-pub fn validate_session(_session: &Session) -> Result<(), InputError> {
-    Ok(())
+pub fn validate_session(session: &Session) -> Result<(), InputError> {
+    validate::check(session).map(|_| ())
 }
 
 /// Solve a session with options.
 pub fn solve(_session: &Session, _options: &SolveOptions) -> Result<Solution, InputError> {
-    Err(InputError::unsolvable("not_implemented", "solver not written yet"))
+    Err(InputError::unsolvable(
+        "not_implemented",
+        "solver not written yet",
+    ))
 }

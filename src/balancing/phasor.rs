@@ -80,8 +80,16 @@ mod tests {
     fn all_conventions() -> [Conventions; 4] {
         use AngleDirection::*;
         use PhaseConvention::*;
-        [(Lag, AgainstRotation), (Lag, WithRotation), (Lead, AgainstRotation), (Lead, WithRotation)]
-            .map(|(phase, angle_direction)| Conventions { phase, angle_direction })
+        [
+            (Lag, AgainstRotation),
+            (Lag, WithRotation),
+            (Lead, AgainstRotation),
+            (Lead, WithRotation),
+        ]
+        .map(|(phase, angle_direction)| Conventions {
+            phase,
+            angle_direction,
+        })
     }
 
     #[test]
@@ -89,16 +97,25 @@ mod tests {
         for conv in all_conventions() {
             for deg in [0.0, 12.5, 90.0, 181.0, 359.9] {
                 let (a, p) = reading_out(conv, reading_in(conv, 3.5, deg));
-                assert!((a - 3.5).abs() < 1e-12 && angle_diff_deg(p, deg) < 1e-9, "{conv:?} {deg}");
+                assert!(
+                    (a - 3.5).abs() < 1e-12 && angle_diff_deg(p, deg) < 1e-9,
+                    "{conv:?} {deg}"
+                );
                 let (m, t) = weight_out(conv, weight_in(conv, 7.0, deg));
-                assert!((m - 7.0).abs() < 1e-12 && angle_diff_deg(t, deg) < 1e-9, "{conv:?} {deg}");
+                assert!(
+                    (m - 7.0).abs() < 1e-12 && angle_diff_deg(t, deg) < 1e-9,
+                    "{conv:?} {deg}"
+                );
             }
         }
     }
 
     #[test]
     fn a_lag_of_90_degrees_is_a_quarter_turn_behind() {
-        let conv = Conventions { phase: PhaseConvention::Lag, angle_direction: AngleDirection::AgainstRotation };
+        let conv = Conventions {
+            phase: PhaseConvention::Lag,
+            angle_direction: AngleDirection::AgainstRotation,
+        };
         let y = reading_in(conv, 1.0, 90.0);
         assert!((y - Complex64::new(0.0, -1.0)).norm() < 1e-12);
     }

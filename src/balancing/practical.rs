@@ -16,11 +16,25 @@ pub fn split(mass_g: f64, angle_deg: f64, n: u32) -> (Vec<SplitPart>, bool) {
     let lower = ((theta / step).floor() as u32).min(n - 1);
     let a1 = f64::from(lower) * step;
     let a2 = a1 + step;
-    let place = |p: u32| SplitPart { position: p % n, angle_deg: wrap_deg(f64::from(p % n) * step), mass_g: 0.0 };
+    let place = |p: u32| SplitPart {
+        position: p % n,
+        angle_deg: wrap_deg(f64::from(p % n) * step),
+        mass_g: 0.0,
+    };
     if n == 2 {
-        let (p, delta) = if theta - a1 <= a2 - theta { (lower, theta - a1) } else { (lower + 1, a2 - theta) };
+        let (p, delta) = if theta - a1 <= a2 - theta {
+            (lower, theta - a1)
+        } else {
+            (lower + 1, a2 - theta)
+        };
         let mass = mass_g * delta.to_radians().cos();
-        return (vec![SplitPart { mass_g: mass, ..place(p) }], delta.abs() < 1e-9);
+        return (
+            vec![SplitPart {
+                mass_g: mass,
+                ..place(p)
+            }],
+            delta.abs() < 1e-9,
+        );
     }
     let s = step.to_radians().sin();
     let m1 = mass_g * (a2 - theta).to_radians().sin() / s;
@@ -29,7 +43,10 @@ pub fn split(mass_g: f64, angle_deg: f64, n: u32) -> (Vec<SplitPart>, bool) {
     let parts = [(lower, m1), (lower + 1, m2)]
         .into_iter()
         .filter(|&(_, m)| m > tiny)
-        .map(|(p, m)| SplitPart { mass_g: m, ..place(p) })
+        .map(|(p, m)| SplitPart {
+            mass_g: m,
+            ..place(p)
+        })
         .collect();
     (parts, true)
 }
@@ -51,14 +68,28 @@ mod tests {
 
     #[test]
     fn a_split_adds_back_to_the_correction_vector() {
-        for (m, theta, n) in [(52.4, 141.0, 12), (10.0, 359.0, 8), (3.0, 0.0, 4), (7.0, 200.0, 3)] {
+        for (m, theta, n) in [
+            (52.4, 141.0, 12),
+            (10.0, 359.0, 8),
+            (3.0, 0.0, 4),
+            (7.0, 200.0, 3),
+        ] {
             let (parts, exact) = split(m, theta, n);
             assert!(exact);
             let (x, y) = parts.iter().fold((0.0, 0.0), |(x, y), p| {
-                (x + p.mass_g * p.angle_deg.to_radians().cos(), y + p.mass_g * p.angle_deg.to_radians().sin())
+                (
+                    x + p.mass_g * p.angle_deg.to_radians().cos(),
+                    y + p.mass_g * p.angle_deg.to_radians().sin(),
+                )
             });
-            assert!((x - m * theta.to_radians().cos()).abs() < 1e-9, "{m} {theta} {n}");
-            assert!((y - m * theta.to_radians().sin()).abs() < 1e-9, "{m} {theta} {n}");
+            assert!(
+                (x - m * theta.to_radians().cos()).abs() < 1e-9,
+                "{m} {theta} {n}"
+            );
+            assert!(
+                (y - m * theta.to_radians().sin()).abs() < 1e-9,
+                "{m} {theta} {n}"
+            );
             assert!(parts.iter().all(|p| p.mass_g > 0.0));
         }
     }
@@ -66,8 +97,13 @@ mod tests {
     #[test]
     fn the_contract_example_splits_between_places_4_and_5() {
         let (parts, _) = split(52.4, 141.0, 12);
-        assert_eq!(parts.iter().map(|p| p.position).collect::<Vec<_>>(), vec![4, 5]);
-        assert!((parts[0].angle_deg - 120.0).abs() < 1e-9 && (parts[1].angle_deg - 150.0).abs() < 1e-9);
+        assert_eq!(
+            parts.iter().map(|p| p.position).collect::<Vec<_>>(),
+            vec![4, 5]
+        );
+        assert!(
+            (parts[0].angle_deg - 120.0).abs() < 1e-9 && (parts[1].angle_deg - 150.0).abs() < 1e-9
+        );
     }
 
     #[test]

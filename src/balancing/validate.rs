@@ -27,6 +27,9 @@ pub const GRADES: [&str; 11] = [
     "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
 ];
 
+/// Position of each id in its list.
+type IdIndex<'s> = HashMap<&'s str, usize>;
+
 /// One (speed point, sensor) pair measured in the reference run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
@@ -77,7 +80,10 @@ fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {
 fn check_id(field: &str, id: &str) -> Result<(), InputError> {
     let n = id.chars().count();
     if n == 0 || n > 64 {
-        return Err(invalid(field, format!("ids are 1 to 64 characters; this one has {n}")));
+        return Err(invalid(
+            field,
+            format!("ids are 1 to 64 characters; this one has {n}"),
+        ));
     }
     Ok(())
 }
@@ -93,35 +99,58 @@ fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError>
 }
 
 /// A finite number in `(0, max]` (or `[0, max]` when `zero_ok`).
-fn check_positive(field: &str, x: f64, max: f64, zero_ok: bool, what: &str) -> Result<(), InputError> {
+fn check_positive(
+    field: &str,
+    x: f64,
+    max: f64,
+    zero_ok: bool,
+    what: &str,
+) -> Result<(), InputError> {
     if !x.is_finite() {
         return Err(invalid(field, format!("{what} must be a finite number")));
     }
     if x < 0.0 || (x == 0.0 && !zero_ok) {
-        let bound = if zero_ok { "0 or more" } else { "greater than 0" };
+        let bound = if zero_ok {
+            "0 or more"
+        } else {
+            "greater than 0"
+        };
         return Err(invalid(field, format!("{what} must be {bound}, got {x}")));
     }
     if x > max {
-        return Err(invalid(field, format!("{what} of {x} is beyond the plausible limit of {max}")));
+        return Err(invalid(
+            field,
+            format!("{what} of {x} is beyond the plausible limit of {max}"),
+        ));
     }
     Ok(())
 }
 
 fn check_angle(field: &str, x: f64) -> Result<(), InputError> {
     if !x.is_finite() || x.abs() > MAX_ANGLE_DEG {
-        return Err(invalid(field, format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}")));
+        return Err(invalid(
+            field,
+            format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}"),
+        ));
     }
     Ok(())
 }
 
 /// Index of an id in a list, checking uniqueness of the list as it goes.
-fn unique_ids<'s>(field: &str, ids: impl Iterator<Item = &'s str>) -> Result<HashMap<&'s str, usize>, InputError> {
+fn unique_ids<'s>(
+    field: &str,
+    ids: impl Iterator<Item = &'s str>,
+) -> Result<HashMap<&'s str, usize>, InputError> {
     let mut seen = HashMap::new();
     for (i, id) in ids.enumerate() {
         let f = format!("{field}[{i}].id");
         check_id(&f, id)?;
         if seen.insert(id, i).is_some() {
-            return Err(InputError::invalid("duplicate_id", f, format!("the id '{id}' is used twice")));
+            return Err(InputError::invalid(
+                "duplicate_id",
+                f,
+                format!("the id '{id}' is used twice"),
+            ));
         }
     }
     Ok(seen)
@@ -155,18 +184,28 @@ fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
     best.map(|(p, _)| p)
 }
 
-fn check_setup(session: &Session) -> Result<(HashMap<&str, usize>, HashMap<&str, usize>), InputError> {
+fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputError> {
     check_text("name", &session.name, true)?;
     if let Some(m) = &session.machine {
         check_text("machine", m, false)?;
     }
     if let Some(r) = &session.rotor {
         check_positive("rotor.mass_kg", r.mass_kg, 1e7, false, "the rotor mass")?;
-        check_positive("rotor.service_speed_rpm", r.service_speed_rpm, MAX_SPEED_RPM, false, "the service speed")?;
+        check_positive(
+            "rotor.service_speed_rpm",
+            r.service_speed_rpm,
+            MAX_SPEED_RPM,
+            false,
+            "the service speed",
+        )?;
         if !GRADES.contains(&r.balance_grade.as_str()) {
             return Err(invalid(
                 "rotor.balance_grade",
-                format!("'{}' is not an ISO 21940-11 grade; use one of {}", r.balance_grade, GRADES.join(", ")),
+                format!(
+                    "'{}' is not an ISO 21940-11 grade; use one of {}",
+                    r.balance_grade,
+                    GRADES.join(", ")
+                ),
             ));
         }
     }
@@ -176,11 +215,20 @@ fn check_setup(session: &Session) -> Result<(HashMap<&str, usize>, HashMap<&str,
     let planes = unique_ids("planes", session.planes.iter().map(|p| p.id.as_str()))?;
     for (i, p) in session.planes.iter().enumerate() {
         if let Some(r) = p.radius_mm {
-            check_positive(&format!("planes[{i}].radius_mm"), r, MAX_RADIUS_MM, false, "the radius")?;
+            check_positive(
+                &format!("planes[{i}].radius_mm"),
+                r,
+                MAX_RADIUS_MM,
+                false,
+                "the radius",
+            )?;
         }
         if let Some(n) = p.positions {
             if !(2..=3600).contains(&n) {
-                return Err(invalid(format!("planes[{i}].positions"), format!("2 to 3600 fixed places, got {n}")));
+                return Err(invalid(
+                    format!("planes[{i}].positions"),
+                    format!("2 to 3600 fixed places, got {n}"),
+                ));
             }
         }
     }
@@ -196,19 +244,48 @@ fn check_setup(session: &Session) -> Result<(HashMap<&str, usize>, HashMap<&str,
     Ok((planes, sensors))
 }
 
-fn check_reading(f: &str, r: &Reading, sensors: &HashMap<&str, usize>) -> Result<usize, InputError> {
-    check_positive(&format!("{f}.speed_rpm"), r.speed_rpm, MAX_SPEED_RPM, false, "the speed")?;
-    let sensor = *sensors
-        .get(r.sensor.as_str())
-        .ok_or_else(|| InputError::invalid("unknown_sensor", format!("{f}.sensor"), format!("no sensor has the id '{}'", r.sensor)))?;
-    check_positive(&format!("{f}.amplitude"), r.amplitude, MAX_AMPLITUDE, true, "the amplitude")?;
+fn check_reading(
+    f: &str,
+    r: &Reading,
+    sensors: &HashMap<&str, usize>,
+) -> Result<usize, InputError> {
+    check_positive(
+        &format!("{f}.speed_rpm"),
+        r.speed_rpm,
+        MAX_SPEED_RPM,
+        false,
+        "the speed",
+    )?;
+    let sensor = *sensors.get(r.sensor.as_str()).ok_or_else(|| {
+        InputError::invalid(
+            "unknown_sensor",
+            format!("{f}.sensor"),
+            format!("no sensor has the id '{}'", r.sensor),
+        )
+    })?;
+    check_positive(
+        &format!("{f}.amplitude"),
+        r.amplitude,
+        MAX_AMPLITUDE,
+        true,
+        "the amplitude",
+    )?;
     check_angle(&format!("{f}.phase_deg"), r.phase_deg)?;
     if let Some(samples) = &r.samples {
         if samples.len() < 2 {
-            return Err(invalid(format!("{f}.samples"), "give at least 2 samples, or leave the list out"));
+            return Err(invalid(
+                format!("{f}.samples"),
+                "give at least 2 samples, or leave the list out",
+            ));
         }
         for (k, s) in samples.iter().enumerate() {
-            check_positive(&format!("{f}.samples[{k}].amplitude"), s.amplitude, MAX_AMPLITUDE, true, "the amplitude")?;
+            check_positive(
+                &format!("{f}.samples[{k}].amplitude"),
+                s.amplitude,
+                MAX_AMPLITUDE,
+                true,
+                "the amplitude",
+            )?;
             check_angle(&format!("{f}.samples[{k}].phase_deg"), s.phase_deg)?;
         }
     }
@@ -222,15 +299,25 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
 
     // Per-field checks of every run, and the reference run.
-    let mut reference = None;
+    let mut reference: Option<usize> = None;
     let mut sensor_of: Vec<Vec<usize>> = Vec::with_capacity(session.runs.len());
     for (i, run) in session.runs.iter().enumerate() {
         for (j, w) in run.weights.iter().enumerate() {
             let f = format!("runs[{i}].weights[{j}]");
             if !planes.contains_key(w.plane.as_str()) {
-                return Err(InputError::invalid("unknown_plane", format!("{f}.plane"), format!("no plane has the id '{}'", w.plane)));
+                return Err(InputError::invalid(
+                    "unknown_plane",
+                    format!("{f}.plane"),
+                    format!("no plane has the id '{}'", w.plane),
+                ));
             }
-            check_positive(&format!("{f}.mass_g"), w.mass_g, MAX_MASS_G, false, "the mass")?;
+            check_positive(
+                &format!("{f}.mass_g"),
+                w.mass_g,
+                MAX_MASS_G,
+                false,
+                "the mass",
+            )?;
             check_angle(&format!("{f}.angle_deg"), w.angle_deg)?;
         }
         let s = run
@@ -256,11 +343,16 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     };
     let ref_run = &session.runs[reference];
     if ref_run.readings.is_empty() {
-        return Err(invalid(format!("runs[{reference}].readings"), "the reference run needs at least one reading"));
+        return Err(invalid(
+            format!("runs[{reference}].readings"),
+            "the reference run needs at least one reading",
+        ));
     }
 
     let points = cluster_speeds(ref_run.readings.iter().map(|r| r.speed_rpm).collect());
-    let runs: Vec<usize> = std::iter::once(reference).chain((0..session.runs.len()).filter(|&i| i != reference)).collect();
+    let runs: Vec<usize> = std::iter::once(reference)
+        .chain((0..session.runs.len()).filter(|&i| i != reference))
+        .collect();
 
     // Pair readings: (point, sensor) -> reading index, per run.
     let mut paired: Vec<HashMap<(usize, usize), usize>> = Vec::with_capacity(runs.len());
@@ -303,7 +395,12 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
         }
         // A trial reading of a sensor/speed the reference lacks cannot be paired either.
         let speed_rpm = ref_run.readings[readings[0]].speed_rpm;
-        rows.push(Row { point, sensor, speed_rpm, readings });
+        rows.push(Row {
+            point,
+            sensor,
+            speed_rpm,
+            readings,
+        });
     }
     for (k, &i) in runs.iter().enumerate().skip(1) {
         let used: HashSet<usize> = rows.iter().map(|r| r.readings[k]).collect();
@@ -326,5 +423,13 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
             t[(planes[w.plane.as_str()], k - 1)] += weight_in(conventions, w.mass_g, w.angle_deg);
         }
     }
-    Ok(Checked { session, conventions, points, rows, runs, y, t })
+    Ok(Checked {
+        session,
+        conventions,
+        points,
+        rows,
+        runs,
+        y,
+        t,
+    })
 }

@@ -4,5 +4,8 @@ use axum::{response::Html, routing::get, Router};
 
 /// Routes for `/` and the form's static files.
 pub fn router<S: Clone + Send + Sync + 'static>() -> Router<S> {
-    Router::new().route("/", get(|| async { Html("<!doctype html><title>fieldbal</title>") }))
+    Router::new().route(
+        "/",
+        get(|| async { Html("<!doctype html><title>fieldbal</title>") }),
+    )
 }

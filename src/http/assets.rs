@@ -1,11 +1,153 @@
 //! The web form's files, embedded in the binary so `fieldbal serve` shows it from any directory.
 
-use axum::{response::Html, routing::get, Router};
+use axum::{
+    extract::Path,
+    http::{header, HeaderValue, StatusCode},
+    response::{IntoResponse, Response},
+    routing::get,
+    Router,
+};
+
+/// One embedded file: its path under `/static/`, content type and bytes.
+struct Asset {
+    path: &'static str,
+    content_type: &'static str,
+    body: &'static str,
+}
+
+macro_rules! asset {
+    ($path:literal, $type:expr) => {
+        Asset {
+            path: $path,
+            content_type: $type,
+            body: include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/static/", $path)),
+        }
+    };
+}
+
+const JS: &str = "text/javascript; charset=utf-8";
+
+/// Every file of `static/`; the test below fails when one is missing here.
+static ASSETS: &[Asset] = &[
+    asset!("index.html", "text/html; charset=utf-8"),
+    asset!("style.css", "text/css; charset=utf-8"),
+    asset!("js/api.js", JS),
+    asset!("js/app.js", JS),
+    asset!("js/dom.js", JS),
+    asset!("js/fields.js", JS),
+    asset!("js/num.js", JS),
+    asset!("js/picture.js", JS),
+    asset!("js/polar.js", JS),
+    asset!("js/report.js", JS),
+    asset!("js/runs.js", JS),
+    asset!("js/sessions.js", JS),
+    asset!("js/setup.js", JS),
+    asset!("js/solve.js", JS),
+    asset!("js/state.js", JS),
+];
+
+/// Scripts and styles from this origin only: even if user text ever reached
+/// the page as HTML, an inline handler such as `onerror=` would not run.
+const CSP: &str = "default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; \
+                   connect-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'; form-action 'none'";
+
+fn find(path: &str) -> Option<&'static Asset> {
+    ASSETS.iter().find(|a| a.path == path)
+}
+
+fn respond(asset: &'static Asset) -> Response {
+    let mut resp = asset.body.into_response();
+    let headers = resp.headers_mut();
+    headers.insert(header::CONTENT_TYPE, HeaderValue::from_static(asset.content_type));
+    // The files change with the binary; revalidate rather than keep a stale form.
+    headers.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
+    headers.insert(
+        header::X_CONTENT_TYPE_OPTIONS,
+        HeaderValue::from_static("nosniff"),
+    );
+    headers.insert(
+        header::CONTENT_SECURITY_POLICY,
+        HeaderValue::from_static(CSP),
+    );
+    resp
+}
+
+async fn index() -> Response {
+    respond(find("index.html").expect("index.html is embedded"))
+}
+
+async fn file(Path(path): Path<String>) -> Response {
+    match find(&path) {
+        Some(asset) => respond(asset),
+        None => (
+            StatusCode::NOT_FOUND,
+            [(header::CONTENT_TYPE, "application/json")],
+            r#"{"error":{"code":"not_found","message":"no such file of the web form"}}"#,
+        )
+            .into_response(),
+    }
+}
 
 /// Routes for `/` and the form's static files.
 pub fn router<S: Clone + Send + Sync + 'static>() -> Router<S> {
-    Router::new().route(
-        "/",
-        get(|| async { Html("<!doctype html><title>fieldbal</title>") }),
-    )
+    Router::new()
+        .route("/", get(index))
+        .route("/static/{*path}", get(file))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn files_under(dir: &std::path::Path, prefix: &str, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).expect("static/ is readable") {
+            let entry = entry.expect("directory entry");
+            let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+            if entry.file_type().expect("file type").is_dir() {
+                files_under(&entry.path(), &format!("{name}/"), out);
+            } else {
+                out.push(name);
+            }
+        }
+    }
+
+    #[test]
+    fn every_file_of_static_is_embedded() {
+        let mut on_disk = Vec::new();
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("static");
+        files_under(&root, "", &mut on_disk);
+        for path in &on_disk {
+            assert!(find(path).is_some(), "static/{path} is not in ASSETS");
+        }
+        assert_eq!(on_disk.len(), ASSETS.len(), "ASSETS lists a file twice");
+    }
+
+    #[test]
+    fn every_imported_module_is_embedded() {
+        for asset in ASSETS.iter().filter(|a| a.path.ends_with(".js")) {
+            for line in asset.body.lines().filter(|l| l.starts_with("import ")) {
+                let module = line
+                    .split('"')
+                    .nth(1)
+                    .and_then(|m| m.strip_prefix("./"))
+                    .unwrap_or_else(|| panic!("{}: unexpected import {line}", asset.path));
+                let path = format!("js/{module}");
+                assert!(find(&path).is_some(), "{} imports {path}, which is not embedded", asset.path);
+            }
+        }
+    }
+
+    #[test]
+    fn content_types_follow_the_extension() {
+        for asset in ASSETS {
+            let ext = asset.path.rsplit('.').next().unwrap_or_default();
+            let expected = match ext {
+                "html" => "text/html",
+                "css" => "text/css",
+                "js" => "text/javascript",
+                other => panic!("no content type for .{other}"),
+            };
+            assert!(asset.content_type.starts_with(expected), "{}", asset.path);
+        }
+    }
 }

@@ -1,0 +1,57 @@
+// The stored-session REST API. Errors carry the server's
+// `{"error":{"code","message","field"}}` so the form can show them at the field.
+
+const BASE = "/api/v1";
+
+export class ApiError extends Error {
+  constructor(status, code, message, field) {
+    super(message);
+    this.status = status;
+    this.code = code;
+    this.field = field || null;
+  }
+}
+
+async function call(method, path, body) {
+  const init = { method, headers: { Accept: "application/json" } };
+  if (body !== undefined) {
+    init.headers["Content-Type"] = "application/json";
+    init.body = JSON.stringify(body);
+  }
+  let resp;
+  try {
+    resp = await fetch(BASE + path, init);
+  } catch (e) {
+    throw new ApiError(0, "network", "The fieldbal service does not answer. Is `fieldbal serve` running?");
+  }
+  const text = await resp.text();
+  let data = null;
+  if (text) {
+    try {
+      data = JSON.parse(text);
+    } catch (e) {
+      data = null;
+    }
+  }
+  if (!resp.ok) {
+    const err = (data && data.error) || {};
+    throw new ApiError(resp.status, err.code || `http_${resp.status}`, err.message || `The service answered ${resp.status}.`, err.field);
+  }
+  return data;
+}
+
+/** Pull the session out of whatever wrapper the service puts around it. */
+export function unwrapSession(data) {
+  if (data && data.session && typeof data.session === "object") return data.session;
+  return data;
+}
+
+export const api = {
+  listSessions: () => call("GET", "/sessions"),
+  getSession: (id) => call("GET", `/sessions/${encodeURIComponent(id)}`),
+  createSession: (session) => call("POST", "/sessions", session),
+  deleteSession: (id) => call("DELETE", `/sessions/${encodeURIComponent(id)}`),
+  addRun: (id, run) => call("POST", `/sessions/${encodeURIComponent(id)}/runs`, run),
+  putRun: (id, runId, run) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run),
+  solve: (id, options) => call("POST", `/sessions/${encodeURIComponent(id)}/solutions`, options || {}),
+};

@@ -1,0 +1,69 @@
+// The form's entry point: the steps of a balancing job, which one is shown,
+// and reopening a stored session from the address (`#session=ID`).
+
+import { $, $$, replace, h } from "./dom.js";
+import { api, unwrapSession } from "./api.js";
+import { state, onChange, resetJob, loadSession } from "./state.js";
+import { renderSetup } from "./setup.js";
+import { renderRuns, newDraft } from "./runs.js";
+import { renderSolve } from "./solve.js";
+import { renderReport } from "./report.js";
+import { renderSessions } from "./sessions.js";
+
+const STEPS = ["setup", "runs", "solve", "report", "sessions"];
+let current = "setup";
+
+function show(step) {
+  current = step;
+  for (const name of STEPS) {
+    $(`#step-${name}`).hidden = name !== step;
+    const tab = $(`nav [data-step="${name}"]`);
+    tab.classList.toggle("current", name === step);
+    tab.setAttribute("aria-current", name === step ? "step" : "false");
+  }
+  const root = $(`#step-${step}`);
+  if (step === "setup") renderSetup(root, () => show("runs"));
+  if (step === "runs") renderRuns(root, () => show("solve"));
+  if (step === "solve") renderSolve(root, () => { newDraft("check", state.solution.corrections.map((c) => ({ plane: c.plane, mass_g: Number(c.mass_g.toFixed(1)), angle_deg: Number(c.angle_deg.toFixed(1)) }))); show("runs"); });
+  if (step === "sessions") renderSessions(root, open, open);
+  // The report is kept current so that printing from any step prints it.
+  renderReport($("#step-report"));
+  updateHeader();
+  window.scrollTo(0, 0);
+}
+
+function updateHeader() {
+  replace($("#job-title"), state.setup.name ? state.setup.name : "New balancing job", state.id ? h("small", {}, " · stored") : "");
+  $('nav [data-step="solve"]').disabled = state.id === null;
+}
+
+async function open(id) {
+  resetJob();
+  if (id === null) {
+    history.replaceState(null, "", location.pathname);
+    return show("setup");
+  }
+  try {
+    const data = await api.getSession(id);
+    loadSession(unwrapSession(data), data.id ?? id);
+    history.replaceState(null, "", `#session=${encodeURIComponent(state.id)}`);
+    show("runs");
+  } catch (err) {
+    history.replaceState(null, "", location.pathname);
+    show("sessions");
+    const root = $("#step-sessions");
+    root.prepend(h("div", { class: "banner error", role: "alert" }, `Could not open the session: ${err.message}`));
+  }
+}
+
+onChange(() => {
+  renderReport($("#step-report"));
+  updateHeader();
+  if (current === "runs") renderRuns($("#step-runs"), () => show("solve"));
+});
+
+for (const tab of $$("nav [data-step]")) tab.addEventListener("click", () => show(tab.dataset.step));
+
+const match = /^#session=(.+)$/.exec(location.hash);
+if (match) open(decodeURIComponent(match[1]));
+else show("setup");

@@ -1,0 +1,201 @@
+// Step 2, the runs: a grid with a row per speed × sensor and an amplitude and a
+// phase per run. One run at a time is typed (a new one, or a stored one being
+// corrected); Tab walks its cells in reading order. Storing the zero run
+// creates the session; each trial run is then appended, a corrected run is PUT.
+
+import { h, replace, $ } from "./dom.js";
+import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "./fields.js";
+import { fmt, unitLabel } from "./num.js";
+import { api } from "./api.js";
+import { state, rows, readingFor, setupJson, runJson, referenceRun, changed } from "./state.js";
+
+function angleWords() {
+  return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
+}
+
+export function weightsText(weights) {
+  if (weights.length === 0) return "no weights (as found)";
+  return weights.map((w) => `${w.plane}: ${fmt(w.mass_g, 1)} g at ${fmt(w.angle_deg, 1)}°`).join(", ");
+}
+
+/** The last stored run with weights: the one whose weights may still be on the rotor. */
+function previousTrial() {
+  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0);
+  return trials.length ? trials[trials.length - 1] : null;
+}
+
+/** Start typing a new run: the zero run first, then trial runs. */
+export function newDraft(kind = "trial", weights = null) {
+  const isZero = !referenceRun();
+  const trials = state.runs.filter((r) => r.weights.length > 0).length;
+  const planes = state.setup.planes;
+  const ownWeights = isZero
+    ? []
+    : weights || [{ plane: planes[Math.min(trials, planes.length - 1)].id, mass_g: null, angle_deg: null }];
+  state.draft = {
+    index: null,
+    id: isZero ? "zero" : kind === "check" ? "check" : `trial ${trials + 1}`,
+    zero: isZero,
+    weights: ownWeights.map((w) => ({ ...w })),
+    carry: false,
+    cells: rows().map(() => ({ amplitude: null, phase_deg: null })),
+  };
+}
+
+/** Correct a stored run: its values go back into the inputs. */
+function editDraft(index) {
+  const run = state.runs[index];
+  state.draft = {
+    index,
+    id: run.id,
+    zero: run.weights.length === 0,
+    weights: run.weights.map((w) => ({ ...w })),
+    carry: false,
+    cells: rows().map((row) => {
+      const r = readingFor(run, row);
+      return { amplitude: r ? r.amplitude : null, phase_deg: r ? r.phase_deg : null };
+    }),
+  };
+}
+
+function draftRun() {
+  const d = state.draft;
+  const prev = previousTrial();
+  const carried = d.carry && prev ? prev.weights : [];
+  return {
+    id: d.id,
+    weights: [...carried, ...d.weights].map((w) => ({ plane: w.plane, mass_g: w.mass_g, angle_deg: w.angle_deg })),
+    readings: rows().map((row, i) => ({ speed_rpm: row.speed, sensor: row.sensor, amplitude: d.cells[i].amplitude, phase_deg: d.cells[i].phase_deg })),
+  };
+}
+
+/** Position of the draft among the runs, for field paths like `runs[2].readings[5].phase_deg`. */
+function draftPosition() {
+  return state.draft.index === null ? state.runs.length : state.draft.index;
+}
+
+async function store(root) {
+  const d = state.draft;
+  clearMarks(root);
+  banner(root, "error", "");
+  if (!validateAll(root)) return banner(root, "error", "Some cells need attention; they are marked in red. Nothing was sent.");
+  const run = draftRun();
+  const k = draftPosition();
+  if (!d.zero && run.weights.length === 0) return banner(root, "error", "A trial run needs at least one weight. Add the trial weight, or tick that the earlier trial weights are still on.");
+  if (state.runs.some((r, i) => r.id === run.id && i !== d.index)) {
+    return mark($(`[data-field="runs[${k}].id"]`, root), "another run already has this name");
+  }
+  try {
+    if (state.id === null) {
+      const session = { ...setupJson(), runs: [run] };
+      const created = await api.createSession(session);
+      state.id = created.id;
+      history.replaceState(null, "", `#session=${encodeURIComponent(created.id)}`);
+      state.runs = [{ ...runJson(run), stored: true }];
+    } else if (d.index === null) {
+      await api.addRun(state.id, run);
+      state.runs.push({ ...runJson(run), stored: true });
+    } else {
+      await api.putRun(state.id, state.runs[d.index].id, run);
+      state.runs[d.index] = { ...runJson(run), stored: true };
+    }
+  } catch (err) {
+    const prefix = state.id === null ? "" : `runs[${k}].`;
+    if (!markServerError(err, prefix)) banner(root, "error", err.message);
+    else banner(root, "error", "The service did not accept the run; the field is marked.");
+    return;
+  }
+  state.draft = null;
+  state.solution = null;
+  changed();
+}
+
+function weightsEditor(d, k, rerender) {
+  const planes = state.setup.planes.map((p) => [p.id, p.id]);
+  const prev = previousTrial();
+  return h(
+    "div",
+    { class: "weights" },
+    h("h4", {}, `Weights on the rotor for this run (angles ${angleWords()})`),
+    prev && d.index === null
+      ? h("label", { class: "carry" },
+          h("input", { type: "checkbox", class: "carry-tick", checked: d.carry, onchange: (e) => { d.carry = e.target.checked; rerender(); } }),
+          ` Weights of “${prev.id}” are still on the rotor`,
+          d.carry ? h("span", { class: "carried" }, ` — carried: ${weightsText(prev.weights)}`) : "")
+      : "",
+    h("table", { class: "edit" },
+      h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Mass, g"), h("th", {}, "Angle, °"), h("th", {}))),
+      h("tbody", {}, d.weights.map((w, j) => h("tr", {},
+        h("td", {}, selectInput({ field: `runs[${k}].weights[${j}].plane`, value: w.plane, choices: planes, label: `Weight ${j + 1} plane`, onValue: (v) => (w.plane = v) })),
+        h("td", {}, numberInput({ field: `runs[${k}].weights[${j}].mass_g`, kind: "mass", value: w.mass_g, label: `Weight ${j + 1} mass, g`, onValue: (v) => (w.mass_g = v) })),
+        h("td", {}, numberInput({ field: `runs[${k}].weights[${j}].angle_deg`, kind: "angle", value: w.angle_deg, label: `Weight ${j + 1} angle, degrees`, onValue: (v) => (w.angle_deg = v) })),
+        h("td", {}, h("button", { type: "button", class: "small", onclick: () => { d.weights.splice(j, 1); rerender(); } }, "Remove")),
+      ))),
+    ),
+    h("button", { type: "button", class: "small add-weight", onclick: () => { d.weights.push({ plane: state.setup.planes[0].id, mass_g: null, angle_deg: null }); rerender(); } }, "+ Add weight"),
+  );
+}
+
+function grid(rerender) {
+  const d = state.draft;
+  const k = d ? draftPosition() : -1;
+  const columns = state.runs.map((run, i) => ({ run, i, editing: d && d.index === i }));
+  if (d && d.index === null) columns.push({ run: null, i: k, editing: true });
+  const phaseWords = state.setup.conventions.phase === "lead" ? "phase lead" : "phase lag";
+  const sensorsById = new Map(state.setup.sensors.map((x) => [x.id, x]));
+  return h("div", { class: "scroll grid-wrap" }, h("table", { class: "grid" },
+    h("thead", {},
+      h("tr", {}, h("th", { rowspan: 2 }, "Speed, rpm"), h("th", { rowspan: 2 }, "Sensor"),
+        columns.map((c) => h("th", { colspan: 2, class: c.editing ? "run editing" : "run" },
+          h("div", { class: "run-name" }, c.editing ? d.id || "(new run)" : c.run.id),
+          h("div", { class: "run-weights" }, c.editing ? (d.zero ? "no weights (as found)" : "being typed") : weightsText(c.run.weights)),
+          !d && c.run && c.run.stored ? h("button", { type: "button", class: "small correct", onclick: () => { editDraft(c.i); rerender(); } }, "Correct") : ""))),
+      h("tr", {}, columns.map(() => [h("th", { class: "sub" }, "Amplitude"), h("th", { class: "sub" }, `Phase, ° ${phaseWords}`)]))),
+    h("tbody", {}, rows().map((row, r) => h("tr", {},
+      h("th", { class: "speed" }, fmt(row.speed, 0)),
+      h("th", { class: "sensor" }, row.sensor, h("small", {}, unitLabel((sensorsById.get(row.sensor) || {}).unit))),
+      columns.map((c) => {
+        if (c.editing) {
+          const cell = d.cells[r];
+          return [
+            h("td", { class: "cell" }, numberInput({ field: `runs[${k}].readings[${r}].amplitude`, kind: "amplitude", value: cell.amplitude, label: `${row.sensor} at ${row.speed} rpm, amplitude`, onValue: (v) => (cell.amplitude = v) })),
+            h("td", { class: "cell" }, numberInput({ field: `runs[${k}].readings[${r}].phase_deg`, kind: "phase", value: cell.phase_deg, label: `${row.sensor} at ${row.speed} rpm, phase`, onValue: (v) => (cell.phase_deg = v) })),
+          ];
+        }
+        const reading = readingFor(c.run, row);
+        return [h("td", { class: "value amp" }, reading ? fmt(reading.amplitude, 1) : "–"), h("td", { class: "value phase" }, reading ? fmt(reading.phase_deg, 0) : "–")];
+      }),
+    ))),
+  ));
+}
+
+/** Render the runs step into `root`; `solve` goes on to step 3. */
+export function renderRuns(root, solve) {
+  if (state.draft === undefined || (state.draft === null && !referenceRun())) newDraft();
+  const rerender = () => renderRuns(root, solve);
+  const d = state.draft;
+  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0).length;
+  const planes = state.setup.planes.length;
+  const k = d ? draftPosition() : -1;
+  replace(
+    root,
+    h("h2", {}, "2 · Runs"),
+    h("p", { class: "lead" }, d && d.zero && d.index === null
+      ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell."
+      : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
+    d ? h("div", { class: "draft" },
+      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
+      d.zero ? "" : weightsEditor(d, k, rerender)) : "",
+    grid(rerender),
+    h("div", { class: "actions" },
+      d ? [
+        h("button", { type: "button", class: "primary store", onclick: () => store(root) },
+          d.index !== null ? "Store the corrected run" : d.zero ? "Store zero run" : "Store run"),
+        state.runs.some((r) => r.stored) ? h("button", { type: "button", class: "cancel", onclick: () => { state.draft = null; rerender(); } }, "Cancel") : "",
+      ] : [
+        h("button", { type: "button", class: "add-trial", onclick: () => { newDraft(); rerender(); $(`[data-field="runs[${state.runs.length}].weights[0].mass_g"]`, root)?.focus(); } }, "+ Add trial run"),
+        h("button", { type: "button", class: "primary go-solve", disabled: trials < planes, onclick: solve }, "Solve →"),
+      ],
+    ),
+  );
+}

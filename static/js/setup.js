@@ -1,0 +1,143 @@
+// Step 1, the set-up: name, machine, conventions (with the picture), planes,
+// sensors and speeds. Fixed once the session is stored (the API has no way to
+// change a stored set-up; export, edit and import to start a changed copy).
+
+import { h, replace, $ } from "./dom.js";
+import { numberInput, textInput, selectInput, validateAll, mark, clearMarks, banner } from "./fields.js";
+import { parseSpeeds, UNITS } from "./num.js";
+import { conventionsPicture } from "./picture.js";
+import { state, setupLocked } from "./state.js";
+
+const PHASES = [
+  ["lag", "Phase lag (most analysers)"],
+  ["lead", "Phase lead"],
+];
+const DIRECTIONS = [
+  ["against_rotation", "Against rotation"],
+  ["with_rotation", "With rotation"],
+];
+
+function planeRow(plane, i, locked, rerender) {
+  return h(
+    "tr",
+    {},
+    h("td", {}, textInput({ field: `planes[${i}].id`, value: plane.id, required: true, label: `Plane ${i + 1} name`, placeholder: "e.g. A", disabled: locked, size: 10, maxlength: 64, onValue: (v) => (plane.id = v) })),
+    h("td", {}, numberInput({ field: `planes[${i}].radius_mm`, kind: "radius", value: plane.radius_mm, required: false, label: `Plane ${i + 1} radius, mm`, disabled: locked, onValue: (v) => (plane.radius_mm = v) })),
+    h("td", {}, numberInput({ field: `planes[${i}].positions`, kind: "positions", value: plane.positions, required: false, label: `Plane ${i + 1} fixed places`, placeholder: "free", disabled: locked, size: 5, onValue: (v) => (plane.positions = v) })),
+    h("td", {}, locked || state.setup.planes.length < 2 ? "" : h("button", { type: "button", class: "small", "aria-label": `Remove plane ${i + 1}`, onclick: () => { state.setup.planes.splice(i, 1); rerender(); } }, "Remove")),
+  );
+}
+
+function sensorRow(sensor, i, locked, rerender) {
+  return h(
+    "tr",
+    {},
+    h("td", {}, textInput({ field: `sensors[${i}].id`, value: sensor.id, required: true, label: `Sensor ${i + 1} name`, placeholder: "e.g. 1H", disabled: locked, size: 10, maxlength: 64, onValue: (v) => (sensor.id = v) })),
+    h("td", {}, selectInput({ field: `sensors[${i}].unit`, value: sensor.unit, choices: Object.entries(UNITS), label: `Sensor ${i + 1} unit`, disabled: locked, onValue: (v) => (sensor.unit = v) })),
+    h("td", {}, textInput({ field: `sensors[${i}].label`, value: sensor.label, label: `Sensor ${i + 1} position`, placeholder: "e.g. DE bearing, horizontal", disabled: locked, size: 22, onValue: (v) => (sensor.label = v) })),
+    h("td", {}, locked || state.setup.sensors.length < 2 ? "" : h("button", { type: "button", class: "small", "aria-label": `Remove sensor ${i + 1}`, onclick: () => { state.setup.sensors.splice(i, 1); rerender(); } }, "Remove")),
+  );
+}
+
+/** Ids must be unique within planes and within sensors; mark the repeats. */
+function checkUnique(root, list, kind) {
+  const seen = new Set();
+  let ok = true;
+  list.forEach((item, i) => {
+    if (!item.id) return;
+    if (seen.has(item.id)) {
+      mark($(`[data-field="${kind}[${i}].id"]`, root), "used twice");
+      ok = false;
+    }
+    seen.add(item.id);
+  });
+  return ok;
+}
+
+/** Render the set-up step into `root`; `next` is called when it checks out. */
+export function renderSetup(root, next) {
+  const locked = setupLocked();
+  const setup = state.setup;
+  const rerender = () => renderSetup(root, next);
+  const picture = h("div", { class: "picture-slot" }, conventionsPicture(setup.conventions));
+  const redrawPicture = () => replace(picture, conventionsPicture(setup.conventions));
+  const speeds = h("input", {
+    type: "text",
+    dataset: { field: "speeds" },
+    "aria-label": "Speeds, rpm",
+    placeholder: "e.g. 1480 or 1480 2950",
+    disabled: locked,
+    size: 24,
+    value: setup.speeds.join(" "),
+  });
+  const checkSpeeds = (showRequired) => {
+    const r = parseSpeeds(speeds.value);
+    mark(speeds, r.error && (showRequired || speeds.value.trim() !== "") ? r.error : "");
+    if (!r.error) setup.speeds = r.value;
+    return !r.error;
+  };
+  speeds.addEventListener("input", () => checkSpeeds(false));
+  speeds.validateNow = () => checkSpeeds(true);
+
+  replace(
+    root,
+    h("h2", {}, "1 · Set-up"),
+    locked ? h("p", { class: "note" }, "This set-up is stored with the session and can no longer change. To change it, export the session as JSON, edit it and import it as a new session.") : "",
+    h(
+      "fieldset",
+      { class: "job" },
+      h("legend", {}, "Job"),
+      h("label", {}, h("span", {}, "Name"), textInput({ field: "name", value: setup.name, required: true, label: "Session name", placeholder: "e.g. ID fan 3, coupling end", disabled: locked, size: 32, onValue: (v) => (setup.name = v) })),
+      h("label", {}, h("span", {}, "Machine"), textInput({ field: "machine", value: setup.machine, label: "Machine", placeholder: "e.g. ID-FAN-3", disabled: locked, size: 20, onValue: (v) => (setup.machine = v) })),
+      h("label", {}, h("span", {}, "Speeds, rpm"), h("span", { class: "field" }, speeds, h("span", { class: "msg", role: "alert" }))),
+    ),
+    h(
+      "fieldset",
+      { class: "conventions" },
+      h("legend", {}, "Conventions — the analyser's, not ours"),
+      h(
+        "div",
+        { class: "conv-choices" },
+        h("label", {}, h("span", {}, "Phase"), selectInput({ field: "conventions.phase", value: setup.conventions.phase, choices: PHASES, label: "Phase convention", disabled: locked, onValue: (v) => { setup.conventions.phase = v; redrawPicture(); } })),
+        h("label", {}, h("span", {}, "Weight angles"), selectInput({ field: "conventions.angle_direction", value: setup.conventions.angle_direction, choices: DIRECTIONS, label: "Weight angle direction", disabled: locked, onValue: (v) => { setup.conventions.angle_direction = v; redrawPicture(); } })),
+      ),
+      picture,
+    ),
+    h(
+      "fieldset",
+      { class: "planes" },
+      h("legend", {}, "Correction planes"),
+      h("div", { class: "scroll" }, h("table", { class: "edit" },
+        h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}))),
+        h("tbody", {}, setup.planes.map((p, i) => planeRow(p, i, locked, rerender))),
+      )),
+      locked ? "" : h("button", { type: "button", class: "add-plane", onclick: () => { setup.planes.push({ id: "", radius_mm: null, positions: null }); rerender(); $(`[data-field="planes[${setup.planes.length - 1}].id"]`, root).focus(); } }, "+ Add plane"),
+      h("p", { class: "hint" }, "Fixed places: the number of equally spaced holes or blades where weights can go (place 0 at the mark). Leave empty for a free angle."),
+    ),
+    h(
+      "fieldset",
+      { class: "sensors" },
+      h("legend", {}, "Sensors"),
+      h("div", { class: "scroll" }, h("table", { class: "edit" },
+        h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Unit"), h("th", {}, "Where"), h("th", {}))),
+        h("tbody", {}, setup.sensors.map((x, i) => sensorRow(x, i, locked, rerender))),
+      )),
+      locked ? "" : h("button", { type: "button", class: "add-sensor", onclick: () => { setup.sensors.push({ id: "", unit: setup.sensors[setup.sensors.length - 1].unit, label: "" }); rerender(); $(`[data-field="sensors[${setup.sensors.length - 1}].id"]`, root).focus(); } }, "+ Add sensor"),
+    ),
+    h(
+      "div",
+      { class: "actions" },
+      h("button", {
+        type: "button",
+        class: "primary next",
+        onclick: () => {
+          if (locked) return next();
+          clearMarks(root);
+          const ok = validateAll(root) && checkUnique(root, setup.planes, "planes") && checkUnique(root, setup.sensors, "sensors");
+          if (ok) next();
+          else banner(root, "error", "Some fields need attention; they are marked in red.");
+        },
+      }, locked ? "Go to the runs →" : "Next: zero run →"),
+    ),
+  );
+}

@@ -1,0 +1,146 @@
+// Step 3, the solution: warnings first and in plain words, then the corrections
+// (mass, angle, unbalance, split over fixed places, uncertainty), the predicted
+// residual per sensor and speed, the before/after summary and the polar plots.
+
+import { h, replace } from "./dom.js";
+import { banner, markServerError } from "./fields.js";
+import { fmt, fmtAngle, angleDiff, unitLabel } from "./num.js";
+import { api } from "./api.js";
+import { state, rows, readingFor, referenceRun, changed } from "./state.js";
+import { polarPlot } from "./polar.js";
+
+/** What to do about each warning, in the technician's words. */
+const ADVICE = {
+  trial_effect_small: "The trial weight moved the vibration too little to measure its effect. Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase).",
+  ill_conditioned: "Two planes look almost the same to the sensors, so the corrections may be large and cancel each other. Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out dependent planes”).",
+  mass_limit_active: "A correction hit the mass limit you set; the residual is larger than it could be without the limit.",
+  mixed_units: "The sensors use different units; the sum over them mixes units. Give sensor weights to balance them.",
+};
+
+/** "52 g ± 4 g, 141° ± 5°": the 95 % intervals as a half-width around the value. */
+export function uncertaintyText(c) {
+  const u = c.uncertainty;
+  if (!u) return "";
+  const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
+  const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
+  return `${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g, ${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`;
+}
+
+function angleWords(conventions) {
+  return conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
+}
+
+export function correctionsTable(solution) {
+  const words = angleWords(solution.conventions || state.setup.conventions);
+  return h("table", { class: "corrections" },
+    h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, `Angle (${words})`), h("th", {}, "95 % uncertainty"), h("th", {}, "Unbalance"), h("th", {}, "On fixed places"))),
+    h("tbody", {}, solution.corrections.map((c) => h("tr", { dataset: { plane: c.plane } },
+      h("th", { class: "corr-plane" }, c.plane),
+      h("td", { class: "corr-mass" }, `${fmt(c.mass_g, 1)} g`),
+      h("td", { class: "corr-angle" }, fmtAngle(c.angle_deg)),
+      h("td", { class: "corr-uncertainty" }, c.uncertainty ? uncertaintyText(c) : "–"),
+      h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
+      h("td", { class: "corr-split" }, c.split ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
+    ))),
+  );
+}
+
+export function residualTable(solution) {
+  return h("table", { class: "residual" },
+    h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, "Phase"), h("th", {}, "Unit"))),
+    h("tbody", {}, solution.predicted_residual.map((r) => h("tr", { class: r.used === false ? "unused" : "" },
+      h("td", {}, fmt(r.speed_rpm, 0)),
+      h("td", {}, r.sensor),
+      h("td", { class: "before" }, fmt(r.amplitude_before, 1)),
+      h("td", { class: "after" }, fmt(r.amplitude, 1)),
+      h("td", { class: "after95" }, r.amplitude_95 !== undefined && r.amplitude_95 !== null ? `≤ ${fmt(r.amplitude_95, 1)}` : "–"),
+      h("td", {}, fmtAngle(r.phase_deg)),
+      h("td", {}, unitLabel(r.unit)),
+    ))),
+  );
+}
+
+export function summaryBox(solution) {
+  const sm = solution.summary;
+  const cut = sm.rms_before > 0 ? 100 * (1 - sm.rms_after / sm.rms_before) : 0;
+  return h("div", { class: "summary" },
+    h("div", { class: "big" }, h("span", { class: "label" }, "RMS over sensors"), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${fmt(sm.rms_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, "Largest"), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${fmt(sm.max_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, "Reduction"), h("span", { class: "value" }, `${fmt(cut, 0)} %`)),
+    h("div", { class: "small" }, `Condition number ${fmt(solution.condition_number, 1)}`),
+    solution.iso_21940 ? h("div", { class: "small" }, `ISO 21940-11 ${solution.iso_21940.balance_grade}: permissible ${fmt(solution.iso_21940.permissible_per_plane_gmm, 0)} g·mm per plane`) : "",
+  );
+}
+
+export function warningsBox(solution) {
+  if (!solution.warnings.length) return h("div", { class: "warnings none" }, "No warnings: the trial runs were clear and the planes independent.");
+  return h("div", { class: "warnings", role: "alert" },
+    h("h3", {}, solution.warnings.length === 1 ? "1 warning — read before fitting weights" : `${solution.warnings.length} warnings — read before fitting weights`),
+    h("ul", {}, solution.warnings.map((w) => h("li", { dataset: { code: w.code } },
+      h("strong", {}, w.plane ? `Plane ${w.plane}: ` : ""), w.message,
+      ADVICE[w.code] ? h("div", { class: "advice" }, `What to do: ${ADVICE[w.code]}`) : "",
+    ))),
+  );
+}
+
+function plots(solution) {
+  const reference = referenceRun();
+  if (!reference) return "";
+  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0);
+  const sensors = new Map(state.setup.sensors.map((x) => [x.id, x]));
+  return h("div", { class: "plots" }, rows().map((row) => {
+    const ref = readingFor(reference, row);
+    if (!ref) return "";
+    const residual = solution.predicted_residual.find((p) => p.sensor === row.sensor && Math.abs(p.speed_rpm - row.speed) <= 0.01 * row.speed);
+    return polarPlot({
+      sensor: row.sensor,
+      unit: (sensors.get(row.sensor) || {}).unit,
+      speed: row.speed,
+      phase: (solution.conventions || state.setup.conventions).phase,
+      reference: ref,
+      trials: trials.map((t) => ({ id: t.id, ...readingFor(t, row) })).filter((t) => t.amplitude !== undefined),
+      residual,
+    });
+  }));
+}
+
+async function solve(root, rerender) {
+  banner(root, "error", "");
+  const options = { objective: state.options.objective };
+  if (state.options.drop) options.drop_dependent_planes = true;
+  try {
+    state.solution = await api.solve(state.id, options);
+  } catch (err) {
+    if (!markServerError(err)) banner(root, "error", err.message);
+    return;
+  }
+  changed();
+  rerender();
+}
+
+/** Render the solve step; `checkRun` starts a check run with the corrections fitted. */
+export function renderSolve(root, checkRun) {
+  const rerender = () => renderSolve(root, checkRun);
+  const sol = state.solution;
+  replace(root,
+    h("h2", {}, "3 · Corrections"),
+    h("div", { class: "solve-options" },
+      h("label", {}, "Minimise ", h("select", { class: "objective", onchange: (e) => (state.options.objective = e.target.value) },
+        h("option", { value: "least_squares", selected: state.options.objective === "least_squares" }, "the sum of squares (usual)"),
+        h("option", { value: "min_max", selected: state.options.objective === "min_max" }, "the largest vibration"))),
+      h("label", {}, h("input", { type: "checkbox", checked: !!state.options.drop, onchange: (e) => (state.options.drop = e.target.checked) }), " leave out dependent planes"),
+      h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve"),
+    ),
+    sol ? [
+      warningsBox(sol),
+      h("h3", {}, "Fit these weights (all trial weights removed)"),
+      h("div", { class: "scroll" }, correctionsTable(sol)),
+      summaryBox(sol),
+      h("h3", {}, "Predicted vibration after correction"),
+      h("div", { class: "scroll" }, residualTable(sol)),
+      h("h3", {}, "Polar plots"),
+      plots(sol),
+      h("div", { class: "actions" }, h("button", { type: "button", class: "check-run", onclick: checkRun }, "Fit the weights, then record a check run →")),
+    ] : h("p", { class: "lead" }, state.id === null ? "Store the zero run and the trial runs first." : "Press Solve to compute the corrections."),
+  );
+}

@@ -1,0 +1,131 @@
+// The job being worked on: the set-up, the runs (stored or being typed), the
+// stored session's id and the last solution. Views read it and call `changed()`.
+
+const listeners = [];
+
+export const state = {
+  id: null, // stored session id, null until the zero run is stored
+  setup: emptySetup(),
+  runs: [], // { id, weights, readings, stored }
+  draft: null, // the run being typed or corrected (see runs.js), or null
+  solution: null,
+  options: { objective: "least_squares" },
+};
+
+export function emptySetup() {
+  return {
+    name: "",
+    machine: "",
+    conventions: { phase: "lag", angle_direction: "against_rotation" },
+    planes: [{ id: "", radius_mm: null, positions: null }],
+    sensors: [{ id: "", unit: "um_pp", label: "" }],
+    speeds: [],
+  };
+}
+
+export function onChange(fn) {
+  listeners.push(fn);
+}
+
+export function changed() {
+  for (const fn of listeners) fn(state);
+}
+
+/** Start over with an empty job. */
+export function resetJob() {
+  state.id = null;
+  state.setup = emptySetup();
+  state.runs = [];
+  state.draft = null;
+  state.solution = null;
+}
+
+/** The grid's rows in reading order: every speed, and every sensor at it. */
+export function rows(setup = state.setup) {
+  const out = [];
+  for (const speed of setup.speeds) {
+    for (const sensor of setup.sensors) out.push({ speed, sensor: sensor.id });
+  }
+  return out;
+}
+
+/** The reading of `run` for a row, paired by sensor and speed within 1 % as the contract says. */
+export function readingFor(run, row) {
+  return run.readings.find(
+    (r) => r.sensor === row.sensor && Math.abs(r.speed_rpm - row.speed) <= 0.01 * Math.max(r.speed_rpm, row.speed),
+  );
+}
+
+/** The set-up part of the wire session (no runs). */
+export function setupJson(setup = state.setup) {
+  const out = { name: setup.name };
+  if (setup.machine) out.machine = setup.machine;
+  out.conventions = { ...setup.conventions };
+  out.planes = setup.planes.map((p) => {
+    const plane = { id: p.id };
+    if (p.radius_mm !== null && p.radius_mm !== undefined) plane.radius_mm = p.radius_mm;
+    if (p.positions !== null && p.positions !== undefined) plane.positions = p.positions;
+    return plane;
+  });
+  out.sensors = setup.sensors.map((x) => {
+    const sensor = { id: x.id, unit: x.unit };
+    if (x.label) sensor.label = x.label;
+    return sensor;
+  });
+  if (setup.rotor) out.rotor = setup.rotor;
+  return out;
+}
+
+export function runJson(run) {
+  return {
+    id: run.id,
+    weights: run.weights.map((w) => ({ plane: w.plane, mass_g: w.mass_g, angle_deg: w.angle_deg })),
+    readings: run.readings.map((r) => {
+      const reading = { speed_rpm: r.speed_rpm, sensor: r.sensor, amplitude: r.amplitude, phase_deg: r.phase_deg };
+      if (r.samples) reading.samples = r.samples;
+      return reading;
+    }),
+  };
+}
+
+/** The whole session in the contract's shape, stored runs only unless `all`. */
+export function sessionJson(all = false) {
+  const session = setupJson();
+  session.runs = state.runs.filter((r) => all || r.stored).map(runJson);
+  return session;
+}
+
+/** Load a wire session (from the server or a file) into the job. */
+export function loadSession(session, id) {
+  const speeds = [];
+  const reference = session.runs.find((r) => r.weights.length === 0) || session.runs[0];
+  for (const r of reference ? reference.readings : []) {
+    if (!speeds.some((x) => Math.abs(x - r.speed_rpm) <= 0.01 * Math.max(x, r.speed_rpm))) speeds.push(r.speed_rpm);
+  }
+  state.id = id;
+  state.setup = {
+    name: session.name,
+    machine: session.machine || "",
+    conventions: {
+      phase: (session.conventions && session.conventions.phase) || "lag",
+      angle_direction: (session.conventions && session.conventions.angle_direction) || "against_rotation",
+    },
+    planes: session.planes.map((p) => ({ id: p.id, radius_mm: p.radius_mm ?? null, positions: p.positions ?? null })),
+    sensors: session.sensors.map((x) => ({ id: x.id, unit: x.unit, label: x.label || "" })),
+    speeds,
+    rotor: session.rotor,
+  };
+  state.runs = session.runs.map((r) => ({ ...runJson(r), stored: id !== null }));
+  state.draft = null;
+  state.solution = null;
+}
+
+/** The reference (zero) run, if there is one. */
+export function referenceRun() {
+  return state.runs.find((r) => r.weights.length === 0 && r.stored) || null;
+}
+
+/** Whether the set-up can still change: only until the session is stored. */
+export function setupLocked() {
+  return state.id !== null;
+}

@@ -9,6 +9,7 @@
 
 pub mod diagnostics;
 pub mod error;
+pub mod identify;
 pub mod influence;
 pub mod model;
 pub mod phasor;

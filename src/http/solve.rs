@@ -8,8 +8,28 @@ use super::error::{ApiError, ErrorBody};
 use super::extract::{JsonBody, OptionsBody};
 use super::AppState;
 use crate::balancing::model::{Session, SolveOptions, SolveRequest};
-use crate::balancing::{self, Solution};
+use crate::balancing::{self, InputError, Solution};
 use crate::db::{self, StoredSolution};
+
+/// Name a solver error's field within the body of `POST /api/v1/solve`
+/// (`{"session", "options"}`): the core names options as `options.…` and the
+/// session's fields from its root.
+fn within_solve_request(e: InputError) -> InputError {
+    match e.field.as_deref() {
+        Some(f) if f != "options" && !f.starts_with("options.") => e.under("session"),
+        _ => e,
+    }
+}
+
+/// Name a solver error's field within a posted options body; a fault in the
+/// stored session is not a field of the body (the message names it).
+fn within_options(mut e: InputError) -> InputError {
+    e.field = e
+        .field
+        .take()
+        .and_then(|f| f.strip_prefix("options.").map(str::to_string));
+    e
+}
 
 /// Run the solver off the async workers: a large session or a min-max problem
 /// must not stall other requests. A panic in the solver becomes a 500.
@@ -17,7 +37,7 @@ async fn solve_blocking(session: Session, options: SolveOptions) -> Result<Solut
     tokio::task::spawn_blocking(move || balancing::solve(&session, &options))
         .await
         .map_err(|e| ApiError::internal(&e))?
-        .map_err(ApiError::from)
+        .map_err(|e| within_solve_request(e).into())
 }
 
 #[utoipa::path(post, path = "/api/v1/solve", tag = "solve",
@@ -51,7 +71,7 @@ pub async fn create_solution(
     OptionsBody(options): OptionsBody,
 ) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
     let stored = db::solutions::solve_and_store(&state.pool, &id, &options, |session| {
-        balancing::solve(session, &options)
+        balancing::solve(session, &options).map_err(within_options)
     })
     .await?;
     Ok((StatusCode::CREATED, Json(stored)))
@@ -68,4 +88,27 @@ pub async fn list_solutions(
     Path(id): Path<String>,
 ) -> Result<Json<Vec<StoredSolution>>, ApiError> {
     Ok(Json(db::solutions::list(&state.pool, &id).await?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solver_errors_name_fields_within_the_posted_body() {
+        let opt = InputError::invalid("x", "options.planes", "m");
+        let run = InputError::invalid("x", "runs", "m");
+        let none = InputError::unsolvable("x", "m");
+        assert_eq!(
+            within_solve_request(opt.clone()).field.as_deref(),
+            Some("options.planes")
+        );
+        assert_eq!(
+            within_solve_request(run.clone()).field.as_deref(),
+            Some("session.runs")
+        );
+        assert_eq!(within_solve_request(none).field, None);
+        assert_eq!(within_options(opt).field.as_deref(), Some("planes"));
+        assert_eq!(within_options(run).field, None);
+    }
 }

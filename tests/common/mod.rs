@@ -89,3 +89,71 @@ pub const SOLVABLE_EXAMPLES: &[&str] = &[
     "compressor-multispeed-exact.json",
     "compressor-multispeed-noisy.json",
 ];
+
+/// Assert that a solution's corrections match an example's `expected` within its tolerance.
+pub fn assert_matches_expected(
+    name: &str,
+    solution: &serde_json::Value,
+    expected: &serde_json::Value,
+) {
+    let tol = &expected["tolerance"];
+    let mass_rel = tol["mass_rel"].as_f64().expect("tolerance.mass_rel");
+    let angle_tol = tol["angle_deg"].as_f64().expect("tolerance.angle_deg");
+    let want = expected["corrections"]
+        .as_array()
+        .expect("expected.corrections");
+    let got = solution["corrections"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{name}: no corrections in {solution}"));
+    assert_eq!(got.len(), want.len(), "{name}: number of corrections");
+    for w in want {
+        let plane = &w["plane"];
+        let g = got
+            .iter()
+            .find(|c| &c["plane"] == plane)
+            .unwrap_or_else(|| panic!("{name}: no correction for {plane}"));
+        let (gm, wm) = (g["mass_g"].as_f64().unwrap(), w["mass_g"].as_f64().unwrap());
+        let (ga, wa) = (
+            g["angle_deg"].as_f64().unwrap(),
+            w["angle_deg"].as_f64().unwrap(),
+        );
+        assert!(
+            (gm - wm).abs() <= mass_rel * wm,
+            "{name} {plane}: mass {gm} vs {wm}"
+        );
+        assert!(
+            fieldbal::balancing::phasor::angle_diff_deg(ga, wa) <= angle_tol,
+            "{name} {plane}: angle {ga} vs {wa}"
+        );
+    }
+}
+
+/// POST a JSON value; returns status, headers and the parsed body (Null if empty).
+pub async fn post(
+    client: &reqwest::Client,
+    url: &str,
+    body: &serde_json::Value,
+) -> (u16, reqwest::header::HeaderMap, serde_json::Value) {
+    send(client.post(url).json(body)).await
+}
+
+/// Send a request; returns status, headers and the parsed body (Null if empty).
+pub async fn send(
+    req: reqwest::RequestBuilder,
+) -> (u16, reqwest::header::HeaderMap, serde_json::Value) {
+    let res = req.send().await.expect("request answered");
+    let status = res.status().as_u16();
+    let headers = res.headers().clone();
+    let bytes = res.bytes().await.expect("body read");
+    let body = if bytes.is_empty() {
+        serde_json::Value::Null
+    } else {
+        serde_json::from_slice(&bytes).unwrap_or_else(|e| {
+            panic!(
+                "body is not JSON ({e}): {}",
+                String::from_utf8_lossy(&bytes)
+            )
+        })
+    };
+    (status, headers, body)
+}

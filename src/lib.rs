@@ -3,6 +3,7 @@
 //! - [`balancing`]: the pure core (session model, validation, influence
 //!   coefficients, least-squares and min-max corrections, uncertainty).
 //! - [`http`]: the REST service and the embedded web form.
+//! - [`db`]: storage of sessions, runs and solutions in SQLite.
 //! - [`cli`]: `fieldbal serve` and `fieldbal solve`.
 //!
 //! Angle conventions are the session's own at every edge (phase `lag`/`lead`,
@@ -10,4 +11,5 @@
 
 pub mod balancing;
 pub mod cli;
+pub mod db;
 pub mod http;

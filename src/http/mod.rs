@@ -1,8 +1,34 @@
 //! The HTTP service: REST API over SQLite and the embedded web form.
+//!
+//! Tests and `fieldbal serve` start it the same way: [`connect_db`], then
+//! [`serve`] on a bound listener with a shutdown future.
 
 pub mod assets;
+pub mod error;
+pub mod extract;
+pub mod openapi;
+pub mod runs;
+pub mod sessions;
+pub mod solve;
 
+use std::future::Future;
 use std::process::ExitCode;
+use std::sync::Arc;
+
+use axum::extract::{DefaultBodyLimit, State};
+use axum::http::{Request, StatusCode};
+use axum::routing::{get, post, put};
+use axum::{Json, Router};
+use sqlx::SqlitePool;
+use tower_http::catch_panic::CatchPanicLayer;
+use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetRequestIdLayer};
+use tower_http::trace::{DefaultOnResponse, TraceLayer};
+use tracing::Level;
+
+use error::ApiError;
+
+/// Default request body limit: 4 MiB.
+pub const DEFAULT_BODY_LIMIT: usize = 4 * 1024 * 1024;
 
 /// `fieldbal serve` arguments.
 #[derive(Debug, Clone, clap::Args)]
@@ -10,13 +36,198 @@ pub struct ServeArgs {
     /// Address to listen on.
     #[arg(long, env = "FIELDBAL_LISTEN", default_value = "127.0.0.1:8080")]
     pub listen: String,
-    /// SQLite database URL or file path.
+    /// SQLite database URL (`sqlite://fieldbal.db`) or file path.
     #[arg(long, env = "DATABASE_URL", default_value = "sqlite://fieldbal.db")]
     pub database: String,
+    /// Largest accepted request body, bytes.
+    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = DEFAULT_BODY_LIMIT)]
+    pub body_limit_bytes: usize,
+}
+
+/// Settings the handlers need.
+#[derive(Debug, Clone)]
+pub struct Config {
+    pub body_limit_bytes: usize,
+}
+
+/// Shared state of the handlers.
+#[derive(Debug, Clone)]
+pub struct AppState {
+    pub pool: SqlitePool,
+    pub config: Arc<Config>,
+}
+
+impl AppState {
+    /// State with the default settings.
+    pub fn new(pool: SqlitePool) -> Self {
+        AppState {
+            pool,
+            config: Arc::new(Config {
+                body_limit_bytes: DEFAULT_BODY_LIMIT,
+            }),
+        }
+    }
+
+    /// The same state with another body limit.
+    pub fn with_body_limit(mut self, bytes: usize) -> Self {
+        self.config = Arc::new(Config {
+            body_limit_bytes: bytes,
+        });
+        self
+    }
+}
+
+/// Open (creating and migrating) the SQLite database at `url` (URL or file path).
+pub async fn connect_db(url: &str) -> Result<SqlitePool, sqlx::Error> {
+    crate::db::connect(url).await
+}
+
+/// The whole service: API, OpenAPI document, web form, JSON 404/405, request ids and logs.
+pub fn app(state: AppState) -> Router {
+    let limit = state.config.body_limit_bytes;
+    let api = Router::new()
+        .route("/healthz", get(healthz))
+        .route("/api/v1/openapi.json", get(openapi::document))
+        .route("/api/v1/solve", post(solve::solve))
+        .route(
+            "/api/v1/sessions",
+            post(sessions::create).get(sessions::list),
+        )
+        .route(
+            "/api/v1/sessions/{id}",
+            get(sessions::get).delete(sessions::delete),
+        )
+        .route("/api/v1/sessions/{id}/runs", post(runs::append))
+        .route("/api/v1/sessions/{id}/runs/{run_id}", put(runs::replace))
+        .route(
+            "/api/v1/sessions/{id}/runs/{run_id}/versions",
+            get(runs::versions),
+        )
+        .route(
+            "/api/v1/sessions/{id}/solutions",
+            post(solve::create_solution).get(solve::list_solutions),
+        )
+        .with_state(state);
+    Router::new()
+        .merge(api)
+        .merge(assets::router())
+        .fallback(not_found)
+        .method_not_allowed_fallback(method_not_allowed)
+        .layer(DefaultBodyLimit::max(limit))
+        .layer(CatchPanicLayer::custom(|_panic| {
+            axum::response::IntoResponse::into_response(ApiError::internal(&"handler panicked"))
+        }))
+        .layer(PropagateRequestIdLayer::x_request_id())
+        .layer(
+            TraceLayer::new_for_http()
+                .make_span_with(|req: &Request<_>| {
+                    let id = req
+                        .headers()
+                        .get("x-request-id")
+                        .and_then(|v| v.to_str().ok())
+                        .unwrap_or("-");
+                    tracing::info_span!("request", request_id = %id, method = %req.method(), uri = %req.uri())
+                })
+                .on_response(DefaultOnResponse::new().level(Level::INFO)),
+        )
+        .layer(SetRequestIdLayer::x_request_id(MakeRequestUuid))
+}
+
+/// Serve `app(state)` on `listener` until `shutdown` completes, then finish the
+/// requests in flight.
+pub async fn serve(
+    listener: tokio::net::TcpListener,
+    state: AppState,
+    shutdown: impl Future<Output = ()> + Send + 'static,
+) -> std::io::Result<()> {
+    axum::serve(listener, app(state))
+        .with_graceful_shutdown(shutdown)
+        .await
+}
+
+#[utoipa::path(get, path = "/healthz", tag = "service",
+    responses((status = 200, description = "Ready: the database answers"),
+              (status = 500, description = "The database does not answer")))]
+async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value>, ApiError> {
+    sqlx::query("SELECT 1")
+        .execute(&state.pool)
+        .await
+        .map_err(|e| ApiError::internal(&e))?;
+    Ok(Json(serde_json::json!({ "status": "ok" })))
+}
+
+async fn not_found() -> ApiError {
+    ApiError::not_found("no such resource")
+}
+
+async fn method_not_allowed() -> ApiError {
+    ApiError::new(
+        StatusCode::METHOD_NOT_ALLOWED,
+        "method_not_allowed",
+        "this resource does not accept that method",
+    )
+}
+
+/// Resolves on Ctrl-C or SIGTERM.
+async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! {
+        () = ctrl_c => {},
+        () = term => {},
+    }
+    tracing::info!("shutdown signal received; finishing requests in flight");
 }
 
 /// Run the service until SIGTERM or Ctrl-C.
-pub fn serve_main(_args: ServeArgs) -> ExitCode {
-    eprintln!("fieldbal serve: not built yet");
-    ExitCode::FAILURE
+pub fn serve_main(args: ServeArgs) -> ExitCode {
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "info".into()),
+        )
+        .init();
+    let runtime = match tokio::runtime::Runtime::new() {
+        Ok(rt) => rt,
+        Err(e) => {
+            eprintln!("fieldbal serve: cannot start the runtime: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    match runtime.block_on(run(args)) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            tracing::error!("fieldbal serve: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+async fn run(args: ServeArgs) -> Result<(), String> {
+    let pool = connect_db(&args.database)
+        .await
+        .map_err(|e| format!("database {}: {e}", args.database))?;
+    let listener = tokio::net::TcpListener::bind(&args.listen)
+        .await
+        .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
+    let addr = listener.local_addr().map_err(|e| e.to_string())?;
+    tracing::info!(%addr, database = %args.database, "fieldbal serve listening");
+    let state = AppState::new(pool.clone()).with_body_limit(args.body_limit_bytes);
+    serve(listener, state, shutdown_signal())
+        .await
+        .map_err(|e| e.to_string())?;
+    pool.close().await;
+    tracing::info!("stopped");
+    Ok(())
 }

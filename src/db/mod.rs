@@ -1,0 +1,80 @@
+//! Storage of sessions, runs (with every corrected version) and solutions in SQLite.
+//!
+//! One request's writes happen in one `BEGIN IMMEDIATE` transaction: the write
+//! lock is taken up front, so concurrent writers queue on the busy timeout
+//! instead of failing on a lock upgrade, and no request stores half a session.
+
+pub mod runs;
+pub mod sessions;
+pub mod solutions;
+
+use std::str::FromStr;
+use std::time::Duration;
+
+use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePoolOptions, SqliteSynchronous};
+use sqlx::{Sqlite, SqlitePool, Transaction};
+
+use crate::balancing::InputError;
+
+pub use runs::RunVersion;
+pub use sessions::{SessionList, SessionSummary};
+pub use solutions::{StoredSolution, UsedRun};
+
+/// How long a connection waits for another writer before giving up.
+const BUSY_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// Open (creating if missing) the database at `url` and apply the embedded migrations.
+///
+/// `url` is an SQLite URL (`sqlite://fieldbal.db`, `sqlite::memory:`) or a plain file path.
+pub async fn connect(url: &str) -> Result<SqlitePool, sqlx::Error> {
+    let options = if url.starts_with("sqlite:") {
+        SqliteConnectOptions::from_str(url)?
+    } else {
+        SqliteConnectOptions::new().filename(url)
+    };
+    let options = options
+        .create_if_missing(true)
+        .journal_mode(SqliteJournalMode::Wal)
+        // In WAL mode NORMAL never corrupts the database and keeps every commit
+        // across a crash of the process; only a power cut may lose the last
+        // commits. FULL would fsync on every commit (see benches/http-load.md).
+        .synchronous(SqliteSynchronous::Normal)
+        .busy_timeout(BUSY_TIMEOUT)
+        .foreign_keys(true);
+    let pool = SqlitePoolOptions::new()
+        .max_connections(8)
+        .connect_with(options)
+        .await?;
+    sqlx::migrate!().run(&pool).await?;
+    Ok(pool)
+}
+
+/// Start a write transaction holding SQLite's write lock from the first statement.
+pub(crate) async fn begin_write(
+    pool: &SqlitePool,
+) -> Result<Transaction<'static, Sqlite>, sqlx::Error> {
+    pool.begin_with("BEGIN IMMEDIATE").await
+}
+
+/// Why a storage operation did not happen.
+#[derive(Debug, thiserror::Error)]
+pub enum StoreError {
+    /// No such session (or run): the message says which.
+    #[error("{0}")]
+    NotFound(String),
+    /// The id is taken: the message says which.
+    #[error("{field}: {message}")]
+    Conflict {
+        field: &'static str,
+        message: String,
+    },
+    /// The change would make the session invalid; nothing was stored.
+    #[error(transparent)]
+    Invalid(InputError),
+    /// The database failed.
+    #[error(transparent)]
+    Db(#[from] sqlx::Error),
+    /// A stored JSON column did not parse (only a bug or a hand-edited database does this).
+    #[error("stored data unreadable: {0}")]
+    Corrupt(#[from] serde_json::Error),
+}

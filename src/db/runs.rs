@@ -1,0 +1,173 @@
+//! The `runs` and `run_versions` tables: append a run, correct one while keeping
+//! its earlier versions, and list those versions.
+
+use serde::Serialize;
+use sqlx::{Row, SqliteConnection, SqlitePool};
+use utoipa::ToSchema;
+
+use super::{begin_write, sessions, StoreError};
+use crate::balancing::model::{Run, Session};
+use crate::balancing::InputError;
+
+/// One stored version of a run.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct RunVersion {
+    /// 1 for the run as first entered, then 2, 3, … per correction.
+    pub version: i64,
+    /// UTC, RFC 3339.
+    pub created_at: String,
+    /// Whether this is the version the session uses now.
+    pub current: bool,
+    pub run: Run,
+}
+
+/// Checks a session with a new or changed run at `index` before it is stored.
+pub type Check<'a> = &'a (dyn Fn(&Session, usize) -> Result<(), InputError> + Sync);
+
+/// Insert a run that does not exist yet, as version 1.
+pub(crate) async fn insert_new(
+    conn: &mut SqliteConnection,
+    seq: i64,
+    position: i64,
+    run: &Run,
+) -> Result<(), StoreError> {
+    sqlx::query("INSERT INTO runs (session_seq, run_id, position, version) VALUES (?, ?, ?, 1)")
+        .bind(seq)
+        .bind(&run.id)
+        .bind(position)
+        .execute(&mut *conn)
+        .await?;
+    sqlx::query(
+        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES (?, ?, 1, ?)",
+    )
+    .bind(seq)
+    .bind(&run.id)
+    .bind(serde_json::to_string(run)?)
+    .execute(&mut *conn)
+    .await?;
+    Ok(())
+}
+
+/// The current version of every run of a session, in the order they were entered.
+pub(crate) async fn current(conn: &mut SqliteConnection, seq: i64) -> Result<Vec<Run>, StoreError> {
+    let rows = sqlx::query(
+        "SELECT v.body FROM runs r
+         JOIN run_versions v ON v.session_seq = r.session_seq AND v.run_id = r.run_id AND v.version = r.version
+         WHERE r.session_seq = ? ORDER BY r.position",
+    )
+    .bind(seq)
+    .fetch_all(&mut *conn)
+    .await?;
+    rows.iter()
+        .map(|r| Ok(serde_json::from_str(r.get("body"))?))
+        .collect()
+}
+
+/// Append a run to a stored session after `check` accepts the session with it.
+/// Returns the run's index in the session.
+pub async fn append(
+    pool: &SqlitePool,
+    id: &str,
+    run: &Run,
+    check: Check<'_>,
+) -> Result<usize, StoreError> {
+    let mut tx = begin_write(pool).await?;
+    let (seq, mut session) = sessions::load(&mut tx, id).await?;
+    if session.runs.iter().any(|r| r.id == run.id) {
+        return Err(StoreError::Conflict {
+            field: "id",
+            message: format!(
+                "the session already has a run with the id '{}'; PUT it to correct it",
+                run.id
+            ),
+        });
+    }
+    let index = session.runs.len();
+    session.runs.push(run.clone());
+    check(&session, index).map_err(StoreError::Invalid)?;
+    let position: i64 =
+        sqlx::query("SELECT COALESCE(MAX(position), -1) + 1 FROM runs WHERE session_seq = ?")
+            .bind(seq)
+            .fetch_one(&mut *tx)
+            .await?
+            .get(0);
+    insert_new(&mut tx, seq, position, run).await?;
+    tx.commit().await?;
+    Ok(index)
+}
+
+/// Replace the current version of a run by a new one, keeping the old; returns the new version number.
+pub async fn replace(
+    pool: &SqlitePool,
+    id: &str,
+    run: &Run,
+    check: Check<'_>,
+) -> Result<i64, StoreError> {
+    let mut tx = begin_write(pool).await?;
+    let (seq, mut session) = sessions::load(&mut tx, id).await?;
+    let index = session
+        .runs
+        .iter()
+        .position(|r| r.id == run.id)
+        .ok_or_else(|| {
+            StoreError::NotFound(format!(
+                "session '{id}' has no run with the id '{}'",
+                run.id
+            ))
+        })?;
+    session.runs[index] = run.clone();
+    check(&session, index).map_err(StoreError::Invalid)?;
+    let version: i64 = sqlx::query(
+        "UPDATE runs SET version = (SELECT MAX(version) + 1 FROM run_versions WHERE session_seq = ?1 AND run_id = ?2)
+         WHERE session_seq = ?1 AND run_id = ?2 RETURNING version",
+    )
+    .bind(seq)
+    .bind(&run.id)
+    .fetch_one(&mut *tx)
+    .await?
+    .get(0);
+    sqlx::query(
+        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES (?, ?, ?, ?)",
+    )
+    .bind(seq)
+    .bind(&run.id)
+    .bind(version)
+    .bind(serde_json::to_string(run)?)
+    .execute(&mut *tx)
+    .await?;
+    tx.commit().await?;
+    Ok(version)
+}
+
+/// Every version of a run, oldest first.
+pub async fn versions(
+    pool: &SqlitePool,
+    id: &str,
+    run_id: &str,
+) -> Result<Vec<RunVersion>, StoreError> {
+    let seq = sessions::seq_of(pool, id).await?;
+    let rows = sqlx::query(
+        "SELECT v.version, v.created_at, v.body, v.version = r.version AS current
+         FROM run_versions v JOIN runs r ON r.session_seq = v.session_seq AND r.run_id = v.run_id
+         WHERE v.session_seq = ? AND v.run_id = ? ORDER BY v.version",
+    )
+    .bind(seq)
+    .bind(run_id)
+    .fetch_all(pool)
+    .await?;
+    if rows.is_empty() {
+        return Err(StoreError::NotFound(format!(
+            "session '{id}' has no run with the id '{run_id}'"
+        )));
+    }
+    rows.iter()
+        .map(|r| {
+            Ok(RunVersion {
+                version: r.get("version"),
+                created_at: r.get("created_at"),
+                current: r.get("current"),
+                run: serde_json::from_str(r.get("body"))?,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,139 @@
+//! The `sessions` table: create, list, read back and delete whole sessions.
+
+use serde::Serialize;
+use sqlx::{Row, Sqlite, SqlitePool, Transaction};
+use utoipa::ToSchema;
+
+use super::{begin_write, runs, StoreError};
+use crate::balancing::model::Session;
+
+/// One line of the session list.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SessionSummary {
+    pub id: String,
+    pub name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine: Option<String>,
+    /// UTC, RFC 3339.
+    pub created_at: String,
+    /// Number of runs (each counted once, however often it was corrected).
+    pub runs: i64,
+}
+
+/// A page of the session list, newest first.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SessionList {
+    pub sessions: Vec<SessionSummary>,
+    /// Number of sessions stored in all.
+    pub total: i64,
+    pub limit: i64,
+    pub offset: i64,
+}
+
+/// Store a validated session under `id` with its runs, in one transaction.
+pub async fn create(pool: &SqlitePool, id: &str, session: &Session) -> Result<(), StoreError> {
+    let setup = Session {
+        runs: Vec::new(),
+        ..session.clone()
+    };
+    let mut tx = begin_write(pool).await?;
+    let seq: i64 = sqlx::query(
+        "INSERT INTO sessions (id, name, machine, setup) VALUES (?, ?, ?, ?) RETURNING seq",
+    )
+    .bind(id)
+    .bind(&session.name)
+    .bind(&session.machine)
+    .bind(serde_json::to_string(&setup)?)
+    .fetch_one(&mut *tx)
+    .await?
+    .get(0);
+    for (position, run) in session.runs.iter().enumerate() {
+        runs::insert_new(&mut tx, seq, position as i64, run).await?;
+    }
+    tx.commit().await?;
+    Ok(())
+}
+
+/// A page of sessions, newest first.
+pub async fn list(pool: &SqlitePool, limit: i64, offset: i64) -> Result<SessionList, StoreError> {
+    let rows = sqlx::query(
+        "SELECT s.id, s.name, s.machine, s.created_at,
+                (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs
+         FROM sessions s ORDER BY s.seq DESC LIMIT ? OFFSET ?",
+    )
+    .bind(limit)
+    .bind(offset)
+    .fetch_all(pool)
+    .await?;
+    let total: i64 = sqlx::query("SELECT COUNT(*) FROM sessions")
+        .fetch_one(pool)
+        .await?
+        .get(0);
+    let sessions = rows
+        .into_iter()
+        .map(|r| SessionSummary {
+            id: r.get("id"),
+            name: r.get("name"),
+            machine: r.get("machine"),
+            created_at: r.get("created_at"),
+            runs: r.get("runs"),
+        })
+        .collect();
+    Ok(SessionList {
+        sessions,
+        total,
+        limit,
+        offset,
+    })
+}
+
+/// The session's internal key, or `NotFound`.
+pub(crate) async fn seq_of<'e, E>(exec: E, id: &str) -> Result<i64, StoreError>
+where
+    E: sqlx::Executor<'e, Database = Sqlite>,
+{
+    sqlx::query("SELECT seq FROM sessions WHERE id = ?")
+        .bind(id)
+        .fetch_optional(exec)
+        .await?
+        .map(|r| r.get(0))
+        .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))
+}
+
+/// The session as it would be posted again: its set-up and the current version of each run.
+pub async fn get(pool: &SqlitePool, id: &str) -> Result<Session, StoreError> {
+    let mut conn = pool.acquire().await?;
+    Ok(load(&mut conn, id).await?.1)
+}
+
+/// Load a session inside a connection or transaction; returns its key too.
+pub(crate) async fn load(
+    conn: &mut sqlx::SqliteConnection,
+    id: &str,
+) -> Result<(i64, Session), StoreError> {
+    let row = sqlx::query("SELECT seq, setup FROM sessions WHERE id = ?")
+        .bind(id)
+        .fetch_optional(&mut *conn)
+        .await?
+        .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))?;
+    let seq: i64 = row.get("seq");
+    let mut session: Session = serde_json::from_str(row.get("setup"))?;
+    session.runs = runs::current(&mut *conn, seq).await?;
+    Ok((seq, session))
+}
+
+/// Delete a session with its runs and solutions.
+pub async fn delete(pool: &SqlitePool, id: &str) -> Result<(), StoreError> {
+    let mut tx: Transaction<'_, Sqlite> = begin_write(pool).await?;
+    let done = sqlx::query("DELETE FROM sessions WHERE id = ?")
+        .bind(id)
+        .execute(&mut *tx)
+        .await?;
+    if done.rows_affected() == 0 {
+        return Err(StoreError::NotFound(format!(
+            "no session has the id '{id}'"
+        )));
+    }
+    tx.commit().await?;
+    Ok(())
+}

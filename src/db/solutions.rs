@@ -1,0 +1,109 @@
+//! The `solutions` table: each solve of a stored session, with its options, the
+//! run versions it used and the fieldbal version that computed it.
+
+use serde::{Deserialize, Serialize};
+use sqlx::{Row, SqlitePool};
+use utoipa::ToSchema;
+
+use super::{begin_write, sessions, StoreError};
+use crate::balancing::model::{Session, SolveOptions};
+use crate::balancing::{InputError, Solution};
+
+/// A run and the version of it that a solution used.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct UsedRun {
+    pub run_id: String,
+    pub version: i64,
+}
+
+/// A stored solution.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct StoredSolution {
+    pub id: i64,
+    /// UTC, RFC 3339.
+    pub created_at: String,
+    /// Version of fieldbal that computed it.
+    pub fieldbal_version: String,
+    pub options: SolveOptions,
+    /// The runs (and their versions) the solution was computed from.
+    pub runs: Vec<UsedRun>,
+    #[schema(value_type = Solution)]
+    pub solution: serde_json::Value,
+}
+
+/// Solve the stored session with `solve` and store the solution; nothing is
+/// stored when `solve` rejects the session or the options.
+pub async fn solve_and_store(
+    pool: &SqlitePool,
+    id: &str,
+    options: &SolveOptions,
+    solve: impl FnOnce(&Session) -> Result<Solution, InputError>,
+) -> Result<StoredSolution, StoreError> {
+    // Read the session and its run versions from one snapshot; solve outside
+    // the write lock, and record exactly which versions were used.
+    let mut read = pool.begin().await?;
+    let (seq, session) = sessions::load(&mut read, id).await?;
+    let runs: Vec<UsedRun> =
+        sqlx::query("SELECT run_id, version FROM runs WHERE session_seq = ? ORDER BY position")
+            .bind(seq)
+            .fetch_all(&mut *read)
+            .await?
+            .iter()
+            .map(|r| UsedRun {
+                run_id: r.get("run_id"),
+                version: r.get("version"),
+            })
+            .collect();
+    read.commit().await?;
+
+    let solution = serde_json::to_value(solve(&session).map_err(StoreError::Invalid)?)?;
+    let fieldbal_version = env!("CARGO_PKG_VERSION").to_string();
+    let mut tx = begin_write(pool).await?;
+    // The session may have been deleted meanwhile: then nothing is inserted.
+    let row = sqlx::query(
+        "INSERT INTO solutions (session_seq, options, run_versions, solution, fieldbal_version)
+         SELECT seq, ?, ?, ?, ? FROM sessions WHERE seq = ?
+         RETURNING seq, created_at",
+    )
+    .bind(serde_json::to_string(options)?)
+    .bind(serde_json::to_string(&runs)?)
+    .bind(serde_json::to_string(&solution)?)
+    .bind(&fieldbal_version)
+    .bind(seq)
+    .fetch_optional(&mut *tx)
+    .await?
+    .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))?;
+    tx.commit().await?;
+    Ok(StoredSolution {
+        id: row.get("seq"),
+        created_at: row.get("created_at"),
+        fieldbal_version,
+        options: options.clone(),
+        runs,
+        solution,
+    })
+}
+
+/// Every stored solution of a session, oldest first.
+pub async fn list(pool: &SqlitePool, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
+    let seq = sessions::seq_of(pool, id).await?;
+    let rows = sqlx::query(
+        "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
+         FROM solutions WHERE session_seq = ? ORDER BY seq",
+    )
+    .bind(seq)
+    .fetch_all(pool)
+    .await?;
+    rows.iter()
+        .map(|r| {
+            Ok(StoredSolution {
+                id: r.get("seq"),
+                created_at: r.get("created_at"),
+                fieldbal_version: r.get("fieldbal_version"),
+                options: serde_json::from_str(r.get("options"))?,
+                runs: serde_json::from_str(r.get("run_versions"))?,
+                solution: serde_json::from_str(r.get("solution"))?,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,38 @@
+//! The OpenAPI document, generated from the handlers' `#[utoipa::path]` annotations.
+
+use axum::Json;
+use utoipa::OpenApi;
+
+use super::{runs, sessions, solve};
+
+#[derive(OpenApi)]
+#[openapi(
+    info(title = "fieldbal", description = "Field balancing of rotors by influence coefficients (docs/session-format.md). Every angle uses the session's conventions."),
+    paths(
+        super::healthz,
+        solve::solve,
+        sessions::create,
+        sessions::list,
+        sessions::get,
+        sessions::delete,
+        runs::append,
+        runs::replace,
+        runs::versions,
+        solve::create_solution,
+        solve::list_solutions,
+        document,
+    ),
+    tags(
+        (name = "sessions", description = "Stored balancing sessions"),
+        (name = "runs", description = "Runs of a stored session, entered one at a time"),
+        (name = "solve", description = "Corrections"),
+        (name = "service", description = "Operations"),
+    )
+)]
+pub struct ApiDoc;
+
+#[utoipa::path(get, path = "/api/v1/openapi.json", tag = "service",
+    responses((status = 200, description = "This document")))]
+pub async fn document() -> Json<utoipa::openapi::OpenApi> {
+    Json(ApiDoc::openapi())
+}

@@ -1,0 +1,159 @@
+//! `/api/v1/sessions/{id}/runs`: append a run, correct one (keeping the earlier
+//! version), list a run's versions. Field paths in errors point into the posted run.
+
+use axum::extract::{Path, State};
+use axum::http::{header, StatusCode};
+use axum::response::IntoResponse;
+use axum::Json;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::JsonBody;
+use super::sessions::validate_stored;
+use super::AppState;
+use crate::balancing::model::{Run, Session};
+use crate::balancing::InputError;
+use crate::db::{self, RunVersion};
+
+/// The stored version of a run.
+#[derive(Debug, Serialize, Deserialize, ToSchema)]
+pub struct RunStored {
+    pub run_id: String,
+    /// 1 when first entered, +1 per correction.
+    pub version: i64,
+}
+
+/// Validate the session with the posted run at `index`, naming fields relative to
+/// the posted run (`readings[3].sensor`, not `runs[4].readings[3].sensor`).
+fn check_with_run(session: &Session, index: usize) -> Result<(), InputError> {
+    validate_stored(session).map_err(|e| relative_to_run(e, index))
+}
+
+fn relative_to_run(mut e: InputError, index: usize) -> InputError {
+    let prefix = format!("runs[{index}]");
+    e.field = e.field.take().and_then(|f| {
+        let rest = f.strip_prefix(&prefix)?;
+        // A fault in another run, or in the session as a whole, is not a field of
+        // the posted body: the message names it.
+        rest.strip_prefix('.').map(str::to_string)
+    });
+    e
+}
+
+/// Percent-encode a path segment (run ids may hold spaces and slashes).
+fn encode_segment(s: &str) -> String {
+    s.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => {
+                (b as char).to_string()
+            }
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
+}
+
+#[utoipa::path(post, path = "/api/v1/sessions/{id}/runs", tag = "runs",
+    params(("id" = String, Path, description = "Session id")),
+    request_body = Run,
+    responses(
+        (status = 201, description = "Appended as version 1", body = RunStored,
+         headers(("Location" = String, description = "/api/v1/sessions/{id}/runs/{run_id}"))),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 404, description = "No such session", body = ErrorBody),
+        (status = 409, description = "The session already has a run with this id", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "The session with this run is invalid", body = ErrorBody),
+    ))]
+pub async fn append(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    JsonBody(run): JsonBody<Run>,
+) -> Result<impl IntoResponse, ApiError> {
+    db::runs::append(&state.pool, &id, &run, &check_with_run).await?;
+    let location = format!(
+        "/api/v1/sessions/{}/runs/{}",
+        encode_segment(&id),
+        encode_segment(&run.id)
+    );
+    Ok((
+        StatusCode::CREATED,
+        [(header::LOCATION, location)],
+        Json(RunStored {
+            run_id: run.id,
+            version: 1,
+        }),
+    ))
+}
+
+#[utoipa::path(put, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
+    params(("id" = String, Path, description = "Session id"),
+           ("run_id" = String, Path, description = "Run id")),
+    request_body = Run,
+    responses(
+        (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 404, description = "No such session or run", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid, or the body's id differs from the path's", body = ErrorBody),
+    ))]
+pub async fn replace(
+    State(state): State<AppState>,
+    Path((id, run_id)): Path<(String, String)>,
+    JsonBody(run): JsonBody<Run>,
+) -> Result<Json<RunStored>, ApiError> {
+    if run.id != run_id {
+        return Err(InputError::invalid(
+            "id_mismatch",
+            "id",
+            format!(
+                "the body's run id '{}' differs from the path's '{run_id}'",
+                run.id
+            ),
+        )
+        .into());
+    }
+    let version = db::runs::replace(&state.pool, &id, &run, &check_with_run).await?;
+    Ok(Json(RunStored { run_id, version }))
+}
+
+#[utoipa::path(get, path = "/api/v1/sessions/{id}/runs/{run_id}/versions", tag = "runs",
+    params(("id" = String, Path, description = "Session id"),
+           ("run_id" = String, Path, description = "Run id")),
+    responses(
+        (status = 200, description = "Every version of the run, oldest first", body = Vec<RunVersion>),
+        (status = 404, description = "No such session or run", body = ErrorBody),
+    ))]
+pub async fn versions(
+    State(state): State<AppState>,
+    Path((id, run_id)): Path<(String, String)>,
+) -> Result<Json<Vec<RunVersion>>, ApiError> {
+    Ok(Json(db::runs::versions(&state.pool, &id, &run_id).await?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_fault_in_the_posted_run_is_named_relative_to_it() {
+        let e = InputError::invalid("x", "runs[4].readings[3].sensor", "m");
+        assert_eq!(
+            relative_to_run(e, 4).field.as_deref(),
+            Some("readings[3].sensor")
+        );
+    }
+
+    #[test]
+    fn a_fault_in_another_run_names_no_field_of_the_body() {
+        let e = InputError::invalid("x", "runs[14].readings", "m");
+        assert_eq!(relative_to_run(e, 1).field, None);
+    }
+
+    #[test]
+    fn run_ids_are_percent_encoded_in_locations() {
+        assert_eq!(encode_segment("trial A/2"), "trial%20A%2F2");
+    }
+}

@@ -1,0 +1,122 @@
+//! `/api/v1/sessions`: store a validated session, list, read back and delete.
+
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{header, StatusCode};
+use axum::response::IntoResponse;
+use axum::Json;
+use serde::{Deserialize, Serialize};
+use utoipa::{IntoParams, ToSchema};
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::JsonBody;
+use super::AppState;
+use crate::balancing::model::Session;
+use crate::balancing::{self, InputError};
+use crate::db::{self, SessionList};
+
+/// The id of a stored session (also in the `Location` header).
+#[derive(Debug, Serialize, Deserialize, ToSchema)]
+pub struct Created {
+    pub id: String,
+}
+
+/// Paging of the session list.
+#[derive(Debug, Deserialize, IntoParams)]
+#[serde(deny_unknown_fields)]
+pub struct ListParams {
+    /// Sessions per page, 1 to 1000 (default 50).
+    pub limit: Option<i64>,
+    /// Sessions to skip (default 0).
+    pub offset: Option<i64>,
+}
+
+/// Validate a session to be stored. A session may be stored before any run is
+/// measured (`runs: []`): its set-up is checked and runs are appended later.
+pub fn validate_stored(session: &Session) -> Result<(), InputError> {
+    match balancing::validate_session(session) {
+        // The core checks the set-up (planes, sensors) before the runs, so when
+        // the only complaint about a run-less session is the missing reference
+        // run, its set-up is valid.
+        Err(e) if session.runs.is_empty() && e.code == "no_reference_run" => Ok(()),
+        other => other,
+    }
+}
+
+#[utoipa::path(post, path = "/api/v1/sessions", tag = "sessions",
+    request_body = Session,
+    responses(
+        (status = 201, description = "Stored", body = Created,
+         headers(("Location" = String, description = "/api/v1/sessions/{id}"))),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid session", body = ErrorBody),
+    ))]
+pub async fn create(
+    State(state): State<AppState>,
+    JsonBody(session): JsonBody<Session>,
+) -> Result<impl IntoResponse, ApiError> {
+    validate_stored(&session)?;
+    let id = uuid::Uuid::new_v4().to_string();
+    db::sessions::create(&state.pool, &id, &session).await?;
+    let location = format!("/api/v1/sessions/{id}");
+    Ok((
+        StatusCode::CREATED,
+        [(header::LOCATION, location)],
+        Json(Created { id }),
+    ))
+}
+
+#[utoipa::path(get, path = "/api/v1/sessions", tag = "sessions",
+    params(ListParams),
+    responses(
+        (status = 200, description = "A page of sessions, newest first", body = SessionList),
+        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
+        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+    ))]
+pub async fn list(
+    State(state): State<AppState>,
+    params: Result<Query<ListParams>, QueryRejection>,
+) -> Result<Json<SessionList>, ApiError> {
+    let Query(params) = params
+        .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
+    let limit = params.limit.unwrap_or(50);
+    if !(1..=1000).contains(&limit) {
+        return Err(InputError::invalid("out_of_range", "limit", "limit must be 1 to 1000").into());
+    }
+    let offset = params.offset.unwrap_or(0);
+    if offset < 0 {
+        return Err(
+            InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
+        );
+    }
+    Ok(Json(db::sessions::list(&state.pool, limit, offset).await?))
+}
+
+#[utoipa::path(get, path = "/api/v1/sessions/{id}", tag = "sessions",
+    params(("id" = String, Path, description = "Session id")),
+    responses(
+        (status = 200, description = "The session exactly as it would be posted again", body = Session),
+        (status = 404, description = "No such session", body = ErrorBody),
+    ))]
+pub async fn get(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<Session>, ApiError> {
+    Ok(Json(db::sessions::get(&state.pool, &id).await?))
+}
+
+#[utoipa::path(delete, path = "/api/v1/sessions/{id}", tag = "sessions",
+    params(("id" = String, Path, description = "Session id")),
+    responses(
+        (status = 204, description = "Deleted with its runs and solutions"),
+        (status = 404, description = "No such session", body = ErrorBody),
+    ))]
+pub async fn delete(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<StatusCode, ApiError> {
+    db::sessions::delete(&state.pool, &id).await?;
+    Ok(StatusCode::NO_CONTENT)
+}

@@ -1,0 +1,114 @@
+//! Solving: stateless `POST /api/v1/solve`, and solutions of stored sessions.
+
+use axum::extract::{Path, State};
+use axum::http::StatusCode;
+use axum::Json;
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::{JsonBody, OptionsBody};
+use super::AppState;
+use crate::balancing::model::{Session, SolveOptions, SolveRequest};
+use crate::balancing::{self, InputError, Solution};
+use crate::db::{self, StoredSolution};
+
+/// Name a solver error's field within the body of `POST /api/v1/solve`
+/// (`{"session", "options"}`): the core names options as `options.…` and the
+/// session's fields from its root.
+fn within_solve_request(e: InputError) -> InputError {
+    match e.field.as_deref() {
+        Some(f) if f != "options" && !f.starts_with("options.") => e.under("session"),
+        _ => e,
+    }
+}
+
+/// Name a solver error's field within a posted options body; a fault in the
+/// stored session is not a field of the body (the message names it).
+fn within_options(mut e: InputError) -> InputError {
+    e.field = e
+        .field
+        .take()
+        .and_then(|f| f.strip_prefix("options.").map(str::to_string));
+    e
+}
+
+/// Run the solver off the async workers: a large session or a min-max problem
+/// must not stall other requests. A panic in the solver becomes a 500.
+async fn solve_blocking(session: Session, options: SolveOptions) -> Result<Solution, ApiError> {
+    tokio::task::spawn_blocking(move || balancing::solve(&session, &options))
+        .await
+        .map_err(|e| ApiError::internal(&e))?
+        .map_err(|e| within_solve_request(e).into())
+}
+
+#[utoipa::path(post, path = "/api/v1/solve", tag = "solve",
+    request_body = SolveRequest,
+    responses(
+        (status = 200, description = "The correction", body = Solution),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid or unsolvable session or options", body = ErrorBody),
+    ))]
+pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solution>, ApiError> {
+    balancing::validate_session(&req.session).map_err(|e| e.under("session"))?;
+    Ok(Json(solve_blocking(req.session, req.options).await?))
+}
+
+#[utoipa::path(post, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
+    params(("id" = String, Path, description = "Session id")),
+    request_body(content = SolveOptions, description = "Solve options; an empty body means the defaults"),
+    responses(
+        (status = 201, description = "Solved and stored", body = StoredSolution),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 404, description = "No such session", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid options, or the session cannot be solved yet", body = ErrorBody),
+    ))]
+pub async fn create_solution(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    OptionsBody(options): OptionsBody,
+) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
+    let stored = db::solutions::solve_and_store(&state.pool, &id, &options, |session| {
+        balancing::solve(session, &options).map_err(within_options)
+    })
+    .await?;
+    Ok((StatusCode::CREATED, Json(stored)))
+}
+
+#[utoipa::path(get, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
+    params(("id" = String, Path, description = "Session id")),
+    responses(
+        (status = 200, description = "Every stored solution, oldest first", body = Vec<StoredSolution>),
+        (status = 404, description = "No such session", body = ErrorBody),
+    ))]
+pub async fn list_solutions(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<Vec<StoredSolution>>, ApiError> {
+    Ok(Json(db::solutions::list(&state.pool, &id).await?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solver_errors_name_fields_within_the_posted_body() {
+        let opt = InputError::invalid("x", "options.planes", "m");
+        let run = InputError::invalid("x", "runs", "m");
+        let none = InputError::unsolvable("x", "m");
+        assert_eq!(
+            within_solve_request(opt.clone()).field.as_deref(),
+            Some("options.planes")
+        );
+        assert_eq!(
+            within_solve_request(run.clone()).field.as_deref(),
+            Some("session.runs")
+        );
+        assert_eq!(within_solve_request(none).field, None);
+        assert_eq!(within_options(opt).field.as_deref(), Some("planes"));
+        assert_eq!(within_options(run).field, None);
+    }
+}

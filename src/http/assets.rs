@@ -58,7 +58,10 @@ fn find(path: &str) -> Option<&'static Asset> {
 fn respond(asset: &'static Asset) -> Response {
     let mut resp = asset.body.into_response();
     let headers = resp.headers_mut();
-    headers.insert(header::CONTENT_TYPE, HeaderValue::from_static(asset.content_type));
+    headers.insert(
+        header::CONTENT_TYPE,
+        HeaderValue::from_static(asset.content_type),
+    );
     // The files change with the binary; revalidate rather than keep a stale form.
     headers.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
     headers.insert(
@@ -132,7 +135,11 @@ mod tests {
                     .and_then(|m| m.strip_prefix("./"))
                     .unwrap_or_else(|| panic!("{}: unexpected import {line}", asset.path));
                 let path = format!("js/{module}");
-                assert!(find(&path).is_some(), "{} imports {path}, which is not embedded", asset.path);
+                assert!(
+                    find(&path).is_some(),
+                    "{} imports {path}, which is not embedded",
+                    asset.path
+                );
             }
         }
     }

@@ -53,5 +53,6 @@ export const api = {
   deleteSession: (id) => call("DELETE", `/sessions/${encodeURIComponent(id)}`),
   addRun: (id, run) => call("POST", `/sessions/${encodeURIComponent(id)}/runs`, run),
   putRun: (id, runId, run) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run),
+  solutions: (id) => call("GET", `/sessions/${encodeURIComponent(id)}/solutions`),
   solve: (id, options) => call("POST", `/sessions/${encodeURIComponent(id)}/solutions`, options || {}),
 };

@@ -46,6 +46,7 @@ async function open(id) {
   try {
     const data = await api.getSession(id);
     loadSession(unwrapSession(data), data.id ?? id);
+    await loadLastSolution();
     history.replaceState(null, "", `#session=${encodeURIComponent(state.id)}`);
     show("runs");
   } catch (err) {
@@ -53,6 +54,28 @@ async function open(id) {
     show("sessions");
     const root = $("#step-sessions");
     root.prepend(h("div", { class: "banner error", role: "alert" }, `Could not open the session: ${err.message}`));
+  }
+}
+
+/**
+ * Show the last stored solution again, if it was computed from the runs the
+ * session has now (a run corrected since then gives a new version; the stored
+ * solution names run ids and versions, so a changed run set is caught here and
+ * a re-solve is one click).
+ */
+async function loadLastSolution() {
+  try {
+    const stored = await api.solutions(state.id);
+    const last = Array.isArray(stored) && stored.length ? stored[stored.length - 1] : null;
+    if (!last || !last.solution) return;
+    const used = (last.runs || []).map((r) => r.run_id).sort().join("\n");
+    const now = state.runs.map((r) => r.id).sort().join("\n");
+    if (used === now) {
+      state.solution = last.solution;
+      state.solutionDate = last.created_at || null;
+    }
+  } catch (err) {
+    // No stored solution to show: the technician solves again.
   }
 }
 

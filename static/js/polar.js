@@ -37,6 +37,10 @@ function arrow(from, to, scale, cls, colour, dashed) {
   return parts;
 }
 
+function ringLabel(x) {
+  return Number.isInteger(x) ? String(x) : String(Number(x.toPrecision(3)));
+}
+
 function niceStep(max) {
   const raw = max / 4;
   const p = 10 ** Math.floor(Math.log10(raw));
@@ -58,7 +62,7 @@ export function polarPlot({ sensor, unit, speed, phase, reference, trials, resid
   const svg = s("svg", { viewBox: `0 0 ${SIZE} ${SIZE}`, class: "polar", role: "img", "aria-label": `Polar plot, ${sensor} at ${speed} rpm` });
   for (let i = 1; i <= rings; i++) {
     svg.append(s("circle", { cx: C, cy: C, r: i * step * scale, class: "ring" }));
-    svg.append(s("text", { x: C + 3, y: C - i * step * scale - 2, class: "ring-label" }, fmt(i * step, 1)));
+    svg.append(s("text", { x: C + 3, y: C - i * step * scale - 2, class: "ring-label" }, ringLabel(i * step)));
   }
   for (let deg = 0; deg < 360; deg += 30) {
     // `deg` is counter-clockwise in the drawing frame; label it in the session's convention.

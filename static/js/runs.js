@@ -141,7 +141,7 @@ function grid(rerender) {
   const k = d ? draftPosition() : -1;
   const columns = state.runs.map((run, i) => ({ run, i, editing: d && d.index === i }));
   if (d && d.index === null) columns.push({ run: null, i: k, editing: true });
-  const phaseWords = state.setup.conventions.phase === "lead" ? "phase lead" : "phase lag";
+  const phaseWords = state.setup.conventions.phase === "lead" ? "(lead)" : "(lag)";
   const sensorsById = new Map(state.setup.sensors.map((x) => [x.id, x]));
   return h("div", { class: "scroll grid-wrap" }, h("table", { class: "grid" },
     h("thead", {},

@@ -45,6 +45,11 @@ export function correctionsTable(solution) {
   );
 }
 
+/** A residual so small beside the reading as found that its phase means nothing. */
+function negligible(r) {
+  return r.amplitude <= 1e-9 * Math.max(r.amplitude_before || 0, 1e-300);
+}
+
 export function residualTable(solution) {
   return h("table", { class: "residual" },
     h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, "Phase"), h("th", {}, "Unit"))),
@@ -54,7 +59,7 @@ export function residualTable(solution) {
       h("td", { class: "before" }, fmt(r.amplitude_before, 1)),
       h("td", { class: "after" }, fmt(r.amplitude, 1)),
       h("td", { class: "after95" }, r.amplitude_95 !== undefined && r.amplitude_95 !== null ? `≤ ${fmt(r.amplitude_95, 1)}` : "–"),
-      h("td", {}, fmtAngle(r.phase_deg)),
+      h("td", {}, negligible(r) ? "–" : fmtAngle(r.phase_deg)),
       h("td", {}, unitLabel(r.unit)),
     ))),
   );
@@ -109,7 +114,9 @@ async function solve(root, rerender) {
   const options = { objective: state.options.objective };
   if (state.options.drop) options.drop_dependent_planes = true;
   try {
-    state.solution = await api.solve(state.id, options);
+    const stored = await api.solve(state.id, options);
+    state.solution = stored && stored.solution ? stored.solution : stored;
+    state.solutionDate = (stored && stored.created_at) || null;
   } catch (err) {
     if (!markServerError(err)) banner(root, "error", err.message);
     return;
@@ -132,6 +139,7 @@ export function renderSolve(root, checkRun) {
       h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve"),
     ),
     sol ? [
+      state.solutionDate ? h("p", { class: "hint solved-at" }, `Solved ${state.solutionDate.replace("T", " ").replace(/\.\d+/, "")}`) : "",
       warningsBox(sol),
       h("h3", {}, "Fit these weights (all trial weights removed)"),
       h("div", { class: "scroll" }, correctionsTable(sol)),

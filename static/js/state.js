@@ -9,6 +9,7 @@ export const state = {
   runs: [], // { id, weights, readings, stored }
   draft: null, // the run being typed or corrected (see runs.js), or null
   solution: null,
+  solutionDate: null,
   options: { objective: "least_squares" },
 };
 

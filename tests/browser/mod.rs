@@ -1,0 +1,217 @@
+//! Support for the end-to-end tests of the web form: Debian's headless Chromium
+//! driven through chromedriver (started here on a free 127.0.0.1 port, stopped
+//! on drop), the example sessions, and screenshots under `target/screenshots/`.
+#![allow(dead_code)] // each browser test binary uses a different part of this module
+
+pub mod form;
+
+use std::net::TcpListener;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::Duration;
+
+use fantoccini::{Client, ClientBuilder, Locator};
+use hyper_util::client::legacy::connect::HttpConnector;
+
+const CHROMIUM: &str = "/usr/bin/chromium";
+const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+
+/// Bounded waits: polls of 100 ms.
+pub const WAIT_POLLS: u32 = 150;
+
+/// A headless Chromium session; dropping it stops chromedriver and its browser.
+pub struct Browser {
+    pub client: Client,
+    driver: Child,
+    _profile: tempfile::TempDir,
+}
+
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0")
+        .and_then(|l| l.local_addr())
+        .expect("a free port on 127.0.0.1")
+        .port()
+}
+
+/// Fail (never skip) when the browser is missing, saying how to install it.
+fn require_binaries() {
+    for bin in [CHROMIUM, CHROMEDRIVER] {
+        assert!(
+            Path::new(bin).exists(),
+            "{bin} is missing: run scripts/install-browser.sh (installs Debian's chromium and chromium-driver)"
+        );
+    }
+}
+
+impl Browser {
+    /// Start chromedriver and a fresh headless Chromium with a 1280×800 window.
+    pub async fn start() -> Browser {
+        require_binaries();
+        let port = free_port();
+        let profile = tempfile::tempdir().expect("temporary profile directory");
+        let mut command = Command::new(CHROMEDRIVER);
+        command
+            .arg(format!("--port={port}"))
+            .arg("--allowed-ips=127.0.0.1")
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null());
+        // Its own process group, so that the browser it starts can be stopped with it.
+        std::os::unix::process::CommandExt::process_group(&mut command, 0);
+        let driver = command.spawn().expect("chromedriver starts");
+        let url = format!("http://127.0.0.1:{port}");
+        let mut ready = false;
+        for _ in 0..WAIT_POLLS {
+            if std::net::TcpStream::connect(("127.0.0.1", port)).is_ok() {
+                ready = true;
+                break;
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        let mut guard = DriverGuard(Some(driver));
+        assert!(ready, "chromedriver did not listen on {url} within 15 s");
+        let args = [
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--disable-dev-shm-usage",
+            "--window-size=1280,800",
+            "--lang=en-GB",
+        ]
+        .iter()
+        .map(|a| a.to_string())
+        .chain([format!("--user-data-dir={}", profile.path().display())])
+        .collect::<Vec<_>>();
+        let mut caps = serde_json::Map::new();
+        caps.insert("browserName".into(), "chrome".into());
+        caps.insert(
+            "goog:chromeOptions".into(),
+            serde_json::json!({ "binary": CHROMIUM, "args": args }),
+        );
+        let client = ClientBuilder::new(HttpConnector::new())
+            .capabilities(caps)
+            .connect(&url)
+            .await
+            .expect("a Chromium session through chromedriver");
+        Browser {
+            client,
+            driver: guard.0.take().expect("driver"),
+            _profile: profile,
+        }
+    }
+
+    /// Close the browser session, then stop chromedriver.
+    pub async fn close(self) {
+        let client = self.client.clone();
+        let _ = client.close().await;
+        drop(self);
+    }
+
+    /// Resize the window so that the page's viewport is `width` × `height`.
+    pub async fn viewport(&self, width: u32, height: u32) {
+        self.client
+            .set_window_size(width, height)
+            .await
+            .expect("window resizes");
+        // The window includes no chrome in headless mode, but check and correct once.
+        let inner: (u64, u64) = serde_json::from_value(
+            self.client
+                .execute("return [window.innerWidth, window.innerHeight]", vec![])
+                .await
+                .expect("inner size"),
+        )
+        .expect("two numbers");
+        let (dw, dh) = (
+            width as i64 - inner.0 as i64,
+            height as i64 - inner.1 as i64,
+        );
+        if dw != 0 || dh != 0 {
+            self.client
+                .set_window_size((width as i64 + dw) as u32, (height as i64 + dh) as u32)
+                .await
+                .expect("window resizes");
+        }
+    }
+
+    /// Save a PNG of the viewport as `target/screenshots/NAME.png`.
+    pub async fn screenshot(&self, name: &str) -> PathBuf {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/screenshots");
+        std::fs::create_dir_all(&dir).expect("screenshot directory");
+        let png = self.client.screenshot().await.expect("screenshot");
+        let path = dir.join(format!("{name}.png"));
+        std::fs::write(&path, png).expect("screenshot written");
+        path
+    }
+
+    /// Wait (bounded) until an element matching `css` exists and return it.
+    pub async fn wait_for(&self, css: &str) -> fantoccini::elements::Element {
+        for _ in 0..WAIT_POLLS {
+            if let Ok(el) = self.client.find(Locator::Css(css)).await {
+                return el;
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        panic!("no element matches {css} within 15 s");
+    }
+
+    /// Wait (bounded) until `script` returns true.
+    pub async fn wait_until(&self, what: &str, script: &str) {
+        for _ in 0..WAIT_POLLS {
+            let v = self
+                .client
+                .execute(script, vec![])
+                .await
+                .expect("script runs");
+            if v == serde_json::Value::Bool(true) {
+                return;
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        panic!("{what}: not true within 15 s ({script})");
+    }
+
+    pub async fn click(&self, css: &str) {
+        self.wait_for(css)
+            .await
+            .click()
+            .await
+            .unwrap_or_else(|e| panic!("click {css}: {e}"));
+    }
+
+    /// The visible text of the first element matching `css`.
+    pub async fn text(&self, css: &str) -> String {
+        self.wait_for(css).await.text().await.expect("element text")
+    }
+}
+
+/// Stops chromedriver's process group (the driver and the browser it started).
+struct DriverGuard(Option<Child>);
+
+impl Drop for DriverGuard {
+    fn drop(&mut self) {
+        if let Some(child) = self.0.as_mut() {
+            stop_group(child);
+        }
+    }
+}
+
+fn stop_group(child: &mut Child) {
+    let pgid = child.id();
+    let _ = Command::new("kill")
+        .args(["-KILL", "--", &format!("-{pgid}")])
+        .stderr(Stdio::null())
+        .status();
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+impl Drop for Browser {
+    fn drop(&mut self) {
+        stop_group(&mut self.driver);
+    }
+}

@@ -1,0 +1,311 @@
+//! End-to-end tests of the web form in a real headless Chromium: a whole
+//! balancing job typed key by key, reopening after a reload, user text that
+//! looks like HTML, and errors shown at their field. Screenshots go to
+//! `target/screenshots/`.
+
+mod browser;
+mod common;
+
+use browser::form::{self, field, type_into, type_run, type_setup, value_of};
+use browser::Browser;
+use fantoccini::Locator;
+use serde_json::{json, Value};
+
+struct Stand {
+    _dir: tempfile::TempDir,
+    server: common::Server,
+    browser: Browser,
+}
+
+impl Stand {
+    async fn start() -> Stand {
+        let dir = tempfile::tempdir().expect("temporary directory");
+        let (_, server) = common::start_server(&dir.path().join("form.db")).await;
+        let browser = Browser::start().await;
+        browser
+            .client
+            .goto(&server.url("/"))
+            .await
+            .expect("the form loads");
+        browser.wait_for("[data-field=\"name\"]").await;
+        Stand {
+            _dir: dir,
+            server,
+            browser,
+        }
+    }
+
+    async fn stop(self) {
+        self.browser.close().await;
+        self.server.shutdown().await;
+    }
+}
+
+fn example_session(name: &str) -> (Value, Value) {
+    let example = common::example(name);
+    (example["session"].clone(), example["expected"].clone())
+}
+
+/// Solve from the runs step and compare the corrections on the page with the expected ones.
+async fn solve_and_compare(b: &Browser, expected: &Value) {
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    let shown = form::corrections_on_page(b).await;
+    let expected = expected["corrections"]
+        .as_array()
+        .expect("expected corrections");
+    assert_eq!(shown.len(), expected.len(), "corrections shown: {shown:?}");
+    for (want, (plane, mass, angle)) in expected.iter().zip(&shown) {
+        assert_eq!(want["plane"].as_str(), Some(plane.as_str()));
+        // The page rounds to 0.1 g and 0.1°.
+        let want_mass = want["mass_g"].as_f64().unwrap();
+        assert!(
+            (mass - want_mass).abs() <= 0.051,
+            "{plane}: {mass} g shown, {want_mass} g expected"
+        );
+        let want_angle = want["angle_deg"].as_f64().unwrap();
+        let diff = (angle - want_angle).rem_euclid(360.0);
+        assert!(
+            diff.min(360.0 - diff) <= 0.051,
+            "{plane}: {angle}° shown, {want_angle}° expected"
+        );
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.viewport(1280, 800).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("setup-1280").await;
+    b.client
+        .execute(
+            "document.querySelector('fieldset.planes').scrollIntoView()",
+            vec![],
+        )
+        .await
+        .expect("scrolls");
+    b.screenshot("setup-planes-1280").await;
+    b.viewport(768, 1024).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("setup-768").await;
+    b.viewport(1280, 800).await;
+    b.click("#step-setup button.next").await;
+    for k in 0..session["runs"].as_array().unwrap().len() {
+        type_run(b, &session, k, false).await;
+    }
+    b.screenshot("runs-1280").await;
+    b.viewport(768, 1024).await;
+    b.screenshot("runs-768").await;
+    b.viewport(1280, 800).await;
+    solve_and_compare(b, &expected).await;
+    b.screenshot("solution-1280").await;
+    b.client
+        .execute("document.querySelector('.plots').scrollIntoView()", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("solution-plots-1280").await;
+    b.viewport(768, 1024).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("solution-768").await;
+    b.client
+        .find(Locator::Css("nav [data-step=\"report\"]"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    let title = b.text(".report-title").await;
+    assert!(
+        title.contains("pump-two-plane-exact"),
+        "report title: {title}"
+    );
+    b.screenshot("report-768").await;
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-kept-trial-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    for k in 0..session["runs"].as_array().unwrap().len() {
+        type_run(b, &session, k, true).await;
+    }
+    // The stored run lists both weights although only the second was typed.
+    let stored = stand.server.url("/api/v1/sessions");
+    let list: Value = reqwest::get(&stored).await.unwrap().json().await.unwrap();
+    let id = list["sessions"][0]["id"]
+        .as_str()
+        .expect("a stored session")
+        .to_string();
+    let got: Value = reqwest::get(format!("{stored}/{id}"))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    assert_eq!(got["runs"][2]["weights"], session["runs"][2]["weights"]);
+    solve_and_compare(b, &expected).await;
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_stored_session_reopens_after_a_reload() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    type_run(b, &session, 0, false).await;
+    type_run(b, &session, 1, false).await;
+
+    // A reload keeps the session (its id is in the address).
+    b.client.refresh().await.expect("reloads");
+    b.wait_for("#step-runs td.value.amp").await;
+    let amps: Vec<String> = {
+        let mut out = Vec::new();
+        for el in b
+            .client
+            .find_all(Locator::Css("#step-runs td.value.amp"))
+            .await
+            .unwrap()
+        {
+            out.push(el.text().await.unwrap());
+        }
+        out
+    };
+    assert_eq!(amps.len(), 8, "two runs × four sensors: {amps:?}");
+    assert_eq!(amps[0], "465.4", "zero run, DE-H");
+    assert_eq!(amps[1], "1073", "trial inboard, DE-H");
+
+    // A fresh start at `/` lists it; opening it restores set-up and runs.
+    b.client.goto(&stand.server.url("/")).await.unwrap();
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("button.open-session").await;
+    b.wait_for("#step-runs td.value.amp").await;
+    assert_eq!(b.text("#job-title").await, "pump-two-plane-exact · stored");
+    b.click("nav [data-step=\"setup\"]").await;
+    assert_eq!(value_of(b, &field("planes[1].id")).await, "outboard");
+    assert_eq!(value_of(b, &field("planes[1].radius_mm")).await, "160");
+    assert_eq!(value_of(b, &field("sensors[3].id")).await, "NDE-V");
+    assert_eq!(value_of(b, &field("speeds")).await, "2950");
+    b.click("#step-setup button.next").await;
+    // The job goes on where it stopped.
+    type_run(b, &session, 2, false).await;
+    solve_and_compare(b, &expected).await;
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_session_named_like_html_is_shown_as_text_and_runs_nothing() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let name = "<img src=x onerror=alert(1)>";
+    let (mut session, _) = example_session("pump-single-plane-noisy.json");
+    session["name"] = json!(name);
+    session["sensors"][0]["label"] = json!("<b>bold</b>");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    type_run(b, &session, 0, false).await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("button.open-session").await;
+    assert_eq!(b.text("button.open-session").await, name);
+    assert_eq!(b.text("#job-title").await, format!("{name} · stored"));
+    b.click("nav [data-step=\"report\"]").await;
+    assert_eq!(
+        b.text(".report-title").await,
+        format!("Balancing report — {name}")
+    );
+    // Had the name been parsed as HTML anywhere, there would be an <img> or a <b>.
+    let parsed = b
+        .client
+        .execute("return document.querySelectorAll('img, b').length", vec![])
+        .await
+        .unwrap();
+    assert_eq!(parsed, json!(0));
+    assert!(b.client.get_alert_text().await.is_err(), "an alert is open");
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, _) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+
+    let cell = field("runs[0].readings[2].phase_deg");
+    type_into(b, &cell, "12x").await;
+    let msg = format!(".field.bad:has({cell}) .msg");
+    assert_eq!(b.text(&msg).await, "not a number");
+    b.click("#step-runs button.store").await;
+    let banner = b.text("#step-runs .banner.error").await;
+    assert!(banner.contains("Nothing was sent"), "{banner}");
+    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    assert_eq!(list["total"], json!(0), "nothing may be stored: {list}");
+    // A decimal comma is a number.
+    type_into(b, &cell, "330,4").await;
+    assert!(
+        b.client.find(Locator::Css(&msg)).await.is_err(),
+        "the mark goes when the number is fixed"
+    );
+    b.viewport(1280, 800).await;
+    type_into(b, &cell, "-").await;
+    b.screenshot("runs-bad-cell-1280").await;
+    type_into(b, &cell, "330.36690382308").await;
+
+    // Store the zero run, then let another client take the next run's name.
+    let mut zero_session = session.clone();
+    zero_session["runs"] = json!([session["runs"][0]]);
+    form::type_cells_with_tab(b, 0, &form::cells(&zero_session, &session["runs"][0])).await;
+    form::store(b).await;
+    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    let id = list["sessions"][0]["id"].as_str().unwrap().to_string();
+    let mut taken = session["runs"][1].clone();
+    taken["id"] = json!("trial 1");
+    let resp = reqwest::Client::new()
+        .post(stand.server.url(&format!("/api/v1/sessions/{id}/runs")))
+        .json(&taken)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(resp.status(), 201);
+    b.click("button.add-trial").await;
+    type_into(b, &field("runs[1].weights[0].mass_g"), "30").await;
+    type_into(b, &field("runs[1].weights[0].angle_deg"), "0").await;
+    form::type_cells_with_tab(b, 1, &form::cells(&session, &session["runs"][1])).await;
+    b.click("#step-runs button.store").await;
+    let at_field = format!(".field.bad:has({}) .msg", field("runs[1].id"));
+    let message = b.text(&at_field).await;
+    assert!(
+        message.contains("already has a run"),
+        "server message at the run name: {message}"
+    );
+    stand.stop().await;
+}

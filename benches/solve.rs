@@ -3,7 +3,9 @@
 //! multi-speed job (16 planes, 32 sensors, 40 speeds).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use fieldbal::balancing::model::{Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight};
+use fieldbal::balancing::model::{
+    Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight,
+};
 use fieldbal::balancing::phasor::{reading_out, weight_out};
 use fieldbal::balancing::solve;
 use nalgebra::{DMatrix, DVector};
@@ -19,7 +21,10 @@ impl Rng {
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     fn phasor(&mut self, scale: f64) -> Complex64 {
-        Complex64::from_polar(scale * (0.2 + self.next()), std::f64::consts::TAU * self.next())
+        Complex64::from_polar(
+            scale * (0.2 + self.next()),
+            std::f64::consts::TAU * self.next(),
+        )
     }
 }
 
@@ -36,18 +41,32 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
             .map(|a| {
                 let (amplitude, phase_deg) = reading_out(conv, y[a] + rng.phasor(0.5));
                 let speed_rpm = 500.0 + 250.0 * (a / sensors) as f64;
-                Reading { speed_rpm, sensor: format!("S{}", a % sensors), amplitude, phase_deg, samples: None }
+                Reading {
+                    speed_rpm,
+                    sensor: format!("S{}", a % sensors),
+                    amplitude,
+                    phase_deg,
+                    samples: None,
+                }
             })
             .collect()
     };
-    let mut runs = vec![Run { id: "zero".into(), weights: vec![], readings: readings(&y0, &mut rng) }];
+    let mut runs = vec![Run {
+        id: "zero".into(),
+        weights: vec![],
+        readings: readings(&y0, &mut rng),
+    }];
     for j in 0..planes {
         let trial = rng.phasor(40.0);
         let (mass_g, angle_deg) = weight_out(conv, trial);
         let y = &y0 + w.column(j) * trial;
         runs.push(Run {
             id: format!("trial {j}"),
-            weights: vec![Weight { plane: format!("P{j}"), mass_g, angle_deg }],
+            weights: vec![Weight {
+                plane: format!("P{j}"),
+                mass_g,
+                angle_deg,
+            }],
             readings: readings(&y, &mut rng),
         });
     }
@@ -56,8 +75,20 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
         machine: None,
         conventions: Some(conv),
         rotor: None,
-        planes: (0..planes).map(|j| Plane { id: format!("P{j}"), radius_mm: Some(150.0), positions: None }).collect(),
-        sensors: (0..sensors).map(|k| Sensor { id: format!("S{k}"), unit: Unit::UmPp, label: None }).collect(),
+        planes: (0..planes)
+            .map(|j| Plane {
+                id: format!("P{j}"),
+                radius_mm: Some(150.0),
+                positions: None,
+            })
+            .collect(),
+        sensors: (0..sensors)
+            .map(|k| Sensor {
+                id: format!("S{k}"),
+                unit: Unit::UmPp,
+                label: None,
+            })
+            .collect(),
         runs,
     }
 }
@@ -65,11 +96,23 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
 fn benches(c: &mut Criterion) {
     let options = SolveOptions::default();
     let small = job(2, 4, 1);
-    c.bench_function("solve two planes, 4 sensors, 1 speed", |b| b.iter(|| solve(black_box(&small), &options).unwrap()));
+    c.bench_function("solve two planes, 4 sensors, 1 speed", |b| {
+        b.iter(|| solve(black_box(&small), &options).unwrap())
+    });
     let large = job(16, 32, 40);
     let mut group = c.benchmark_group("large");
     group.sample_size(20);
-    group.bench_function("solve 16 planes, 32 sensors, 40 speeds", |b| b.iter(|| solve(black_box(&large), &options).unwrap()));
+    group.bench_function("solve 16 planes, 32 sensors, 40 speeds", |b| {
+        b.iter(|| solve(black_box(&large), &options).unwrap())
+    });
+    group.bench_function("validate 16 planes, 32 sensors, 40 speeds", |b| {
+        b.iter(|| {
+            fieldbal::balancing::validate::check(black_box(&large))
+                .unwrap()
+                .rows
+                .len()
+        })
+    });
     group.finish();
 }
 

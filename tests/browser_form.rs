@@ -133,6 +133,30 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         "report title: {title}"
     );
     b.screenshot("report-768").await;
+
+    // The check run starts with the corrections as its weights; readings at the
+    // predicted residual (zero for exact data) leave the corrections unchanged.
+    b.viewport(1280, 800).await;
+    b.click("nav [data-step=\"solve\"]").await;
+    b.click("#step-solve button.check-run").await;
+    assert_eq!(value_of(b, &field("runs[3].weights[0].mass_g")).await, "30");
+    assert_eq!(
+        value_of(b, &field("runs[3].weights[0].angle_deg")).await,
+        "255"
+    );
+    assert_eq!(value_of(b, &field("runs[3].weights[1].mass_g")).await, "22");
+    assert_eq!(
+        value_of(b, &field("runs[3].weights[1].angle_deg")).await,
+        "120"
+    );
+    form::type_cells_with_tab(b, 3, &vec!["0".to_string(); 8]).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("runs-check-entry-1280").await;
+    form::store(b).await;
+    solve_and_compare(b, &expected).await;
     stand.stop().await;
 }
 

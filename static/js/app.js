@@ -23,13 +23,22 @@ function show(step) {
   }
   const root = $(`#step-${step}`);
   if (step === "setup") renderSetup(root, () => show("runs"));
-  if (step === "runs") renderRuns(root, () => show("solve"));
+  if (step === "runs") {
+    if (setupReady()) renderRuns(root, () => show("solve"));
+    else replace(root, h("h2", {}, "2 · Runs"), h("p", { class: "note" }, "Finish the set-up first: a name, the speeds, and a name for every plane and sensor."), h("button", { type: "button", class: "primary", onclick: () => show("setup") }, "← Back to the set-up"));
+  }
   if (step === "solve") renderSolve(root, () => { newDraft("check", state.solution.corrections.map((c) => ({ plane: c.plane, mass_g: Number(c.mass_g.toFixed(1)), angle_deg: Number(c.angle_deg.toFixed(1)) }))); show("runs"); });
   if (step === "sessions") renderSessions(root, open, open);
   // The report is kept current so that printing from any step prints it.
   renderReport($("#step-report"));
   updateHeader();
   window.scrollTo(0, 0);
+}
+
+/** The grid needs speeds, planes and sensors with names; set-up's Next checks the rest. */
+function setupReady() {
+  const s = state.setup;
+  return state.id !== null || (s.name !== "" && s.speeds.length > 0 && s.planes.every((p) => p.id) && s.sensors.every((x) => x.id));
 }
 
 function updateHeader() {

@@ -51,7 +51,8 @@ export function numberInput({ field, kind, value, required = true, onValue, labe
     const r = validate(false);
     onValue(r.error || r.empty ? null : r.value);
   });
-  input.addEventListener("blur", () => validate(false));
+  // Leaving a cell keeps a "required" mark that a check put there until it is filled.
+  input.addEventListener("blur", () => validate(input.getAttribute("aria-invalid") === "true"));
   input.validateNow = () => !validate(true).error;
   return wrap(input, "num-field");
 }

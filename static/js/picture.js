@@ -4,7 +4,7 @@
 import { h, s } from "./dom.js";
 
 const R = 58;
-const CX = 90;
+const CX = 100;
 const CY = 100;
 
 /** Point at `deg` measured clockwise from the top (screen coordinates). */
@@ -41,22 +41,23 @@ function rotor(direction) {
   const withRotation = direction === "with_rotation";
   const weightAt = withRotation ? 90 : 270;
   const [wx, wy] = at(weightAt, R - 12);
+  const [lx, ly] = at(weightAt, R + 20);
   const [mx, my] = at(0, R + 4);
   return s(
     "svg",
-    { viewBox: "0 0 180 205", class: "picture-rotor", role: "img", "aria-label": "Where a weight at 90 degrees sits" },
+    { viewBox: "0 0 200 225", class: "picture-rotor", role: "img", "aria-label": "Where a weight at 90 degrees sits" },
     s("circle", { cx: CX, cy: CY, r: R, class: "disc" }),
     s("circle", { cx: CX, cy: CY, r: 5, class: "shaft" }),
     s("path", { d: `M${CX},${CY - R - 10} L${mx - 5},${my - 12} L${mx + 5},${my - 12} Z`, class: "mark" }),
     s("text", { x: CX, y: 12, class: "label", "text-anchor": "middle" }, "0° = reference mark"),
-    s("path", { d: arc(200, 320, R + 14, true), class: "rotation" }),
-    s("polygon", { points: arrowHead(320, R + 14, true), class: "rotation-head" }),
-    s("text", { x: 8, y: 60, class: "label rot" }, "rotation"),
+    s("path", { d: arc(130, 230, R + 12, true), class: "rotation" }),
+    s("polygon", { points: arrowHead(230, R + 12, true), class: "rotation-head" }),
+    s("text", { x: CX, y: CY + R + 30, class: "label rot", "text-anchor": "middle" }, "rotation"),
     s("path", { d: arc(0, withRotation ? 90 : 270, R - 24, withRotation), class: "count" }),
     s("polygon", { points: arrowHead(withRotation ? 90 : 270, R - 24, withRotation), class: "count-head" }),
     s("circle", { cx: wx, cy: wy, r: 8, class: "weight" }),
-    s("text", { x: wx, y: wy + 24, class: "label", "text-anchor": "middle" }, "90°"),
-    s("text", { x: CX, y: 198, class: "label", "text-anchor": "middle" }, withRotation ? "counted with rotation" : "counted against rotation"),
+    s("text", { x: lx, y: ly + 4, class: "label", "text-anchor": "middle" }, "90°"),
+    s("text", { x: CX, y: 220, class: "label", "text-anchor": "middle" }, withRotation ? "counted with rotation" : "counted against rotation"),
   );
 }
 

@@ -36,6 +36,7 @@ export function newDraft(kind = "trial", weights = null) {
     index: null,
     id: isZero ? "zero" : kind === "check" ? "check" : `trial ${trials + 1}`,
     zero: isZero,
+    check: kind === "check" && !isZero,
     weights: ownWeights.map((w) => ({ ...w })),
     carry: false,
     cells: rows().map(() => ({ amplitude: null, phase_deg: null })),
@@ -182,7 +183,9 @@ export function renderRuns(root, solve) {
     h("h2", {}, "2 · Runs"),
     h("p", { class: "lead" }, d && d.zero && d.index === null
       ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell."
-      : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
+      : d && d.check
+        ? "Check run: fit the corrections below, take every trial weight off, run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
+        : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
     d ? h("div", { class: "draft" },
       h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
       d.zero ? "" : weightsEditor(d, k, rerender)) : "",

@@ -91,7 +91,14 @@ impl Browser {
         caps.insert("browserName".into(), "chrome".into());
         caps.insert(
             "goog:chromeOptions".into(),
-            serde_json::json!({ "binary": CHROMIUM, "args": args }),
+            serde_json::json!({
+                "binary": CHROMIUM,
+                "args": args,
+                "prefs": {
+                    "download.default_directory": profile.path().join("downloads"),
+                    "download.prompt_for_download": false,
+                },
+            }),
         );
         let client = ClientBuilder::new(HttpConnector::new())
             .capabilities(caps)
@@ -110,6 +117,20 @@ impl Browser {
         let client = self.client.clone();
         let _ = client.close().await;
         drop(self);
+    }
+
+    /// Wait (bounded) for a finished download named `name` and return its bytes.
+    pub async fn downloaded(&self, name: &str) -> Vec<u8> {
+        let path = self._profile.path().join("downloads").join(name);
+        for _ in 0..WAIT_POLLS {
+            if let Ok(bytes) = std::fs::read(&path) {
+                if !bytes.is_empty() {
+                    return bytes;
+                }
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        panic!("{} was not downloaded within 15 s", path.display());
     }
 
     /// Resize the window so that the page's viewport is `width` × `height`.

@@ -1,0 +1,102 @@
+//! End-to-end test of the form's exports: the session typed into the form
+//! comes back as exactly the example's JSON, and the readings and results as CSV.
+
+mod browser;
+mod common;
+
+use browser::form::{self, type_run, type_setup};
+use browser::Browser;
+use serde_json::Value;
+
+/// Where two JSON values differ, numbers compared as f64 (`30` and `30.0` are the same number).
+fn difference(a: &Value, b: &Value, path: &str) -> Option<String> {
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => {
+            (x.as_f64() != y.as_f64()).then(|| format!("{path}: {x} != {y}"))
+        }
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => x
+            .iter()
+            .zip(y)
+            .enumerate()
+            .find_map(|(i, (x, y))| difference(x, y, &format!("{path}[{i}]"))),
+        (Value::Object(x), Value::Object(y)) if x.len() == y.len() => {
+            x.iter().find_map(|(k, v)| {
+                y.get(k).map_or_else(
+                    || Some(format!("{path}.{k}: missing")),
+                    |w| difference(v, w, &format!("{path}.{k}")),
+                )
+            })
+        }
+        _ => (a != b).then(|| format!("{path}: {a} != {b}")),
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_typed_session_exports_as_the_same_json_and_its_readings_and_results_as_csv() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let (_, server) = common::start_server(&dir.path().join("export.db")).await;
+    let b = Browser::start().await;
+    b.client
+        .goto(&server.url("/"))
+        .await
+        .expect("the form loads");
+    let example = common::example("pump-two-plane-exact.json");
+    let session = &example["session"];
+    type_setup(&b, session).await;
+    b.click("#step-setup button.next").await;
+    for k in 0..session["runs"].as_array().unwrap().len() {
+        type_run(&b, session, k, false).await;
+    }
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    form::corrections_on_page(&b).await;
+
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("button.export-json").await;
+    let exported: Value =
+        serde_json::from_slice(&b.downloaded("pump-two-plane-exact.json").await).expect("JSON");
+    assert_eq!(
+        difference(&exported, session, "session"),
+        None,
+        "the exported session is the example, number for number"
+    );
+
+    b.click("button.export-readings").await;
+    let readings =
+        String::from_utf8(b.downloaded("pump-two-plane-exact-readings.csv").await).unwrap();
+    let lines: Vec<&str> = readings.lines().collect();
+    assert_eq!(
+        lines.len(),
+        1 + 3 * 4,
+        "a header and a line per run and sensor:\n{readings}"
+    );
+    assert!(
+        lines[0].starts_with("\"run\",\"weights\",\"speed_rpm\""),
+        "{}",
+        lines[0]
+    );
+    assert!(lines[1].contains("\"465.37419496698874\""), "{}", lines[1]);
+
+    b.click("button.export-results").await;
+    let results =
+        String::from_utf8(b.downloaded("pump-two-plane-exact-results.csv").await).unwrap();
+    let corrections: Vec<&str> = results
+        .lines()
+        .filter(|l| l.starts_with("\"correction\""))
+        .collect();
+    assert_eq!(corrections.len(), 2, "{results}");
+    assert!(
+        corrections[0].starts_with("\"correction\",\"inboard\",\"\",\"29.99"),
+        "{}",
+        corrections[0]
+    );
+    assert_eq!(
+        results
+            .lines()
+            .filter(|l| l.starts_with("\"residual\""))
+            .count(),
+        4
+    );
+    b.close().await;
+    server.shutdown().await;
+}

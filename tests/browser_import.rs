@@ -5,22 +5,10 @@
 mod browser;
 mod common;
 
+use browser::stand::Stand;
 use browser::{form, Browser};
 use fantoccini::Locator;
 use serde_json::{json, Value};
-
-async fn start() -> (tempfile::TempDir, common::Server, Browser) {
-    let dir = tempfile::tempdir().expect("temporary directory");
-    let (_, server) = common::start_server(&dir.path().join("import.db")).await;
-    let browser = Browser::start().await;
-    browser
-        .client
-        .goto(&server.url("/"))
-        .await
-        .expect("the form loads");
-    browser.wait_for("[data-field=\"name\"]").await;
-    (dir, server, browser)
-}
 
 /// Import `file` through the sessions page, as a technician picking the file would.
 async fn import(b: &Browser, dir: &tempfile::TempDir, name: &str, content: &Value) {
@@ -37,9 +25,10 @@ async fn import(b: &Browser, dir: &tempfile::TempDir, name: &str, content: &Valu
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_corrections() {
-    let (dir, server, b) = start().await;
+    let stand = Stand::start().await;
+    let b = &stand.browser;
     let example = common::example("compressor-multispeed-noisy.json");
-    import(&b, &dir, "compressor.json", &example).await;
+    import(b, &stand.dir, "compressor.json", &example).await;
     let rows = b
         .client
         .find_all(Locator::Css("#step-runs table.grid tbody tr"))
@@ -50,7 +39,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
     b.screenshot("runs-multispeed-1280").await;
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
-    let shown = form::corrections_on_page(&b).await;
+    let shown = form::corrections_on_page(b).await;
     let expected = example["expected"]["corrections"].as_array().unwrap();
     assert_eq!(shown.len(), expected.len());
     for (want, (plane, mass, angle)) in expected.iter().zip(&shown) {
@@ -76,13 +65,13 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         .await
         .unwrap();
     b.screenshot("solution-multispeed-plots-1280").await;
-    b.close().await;
-    server.shutdown().await;
+    stand.stop().await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_weak_trial_run_is_warned_about_with_what_to_do() {
-    let (dir, server, b) = start().await;
+    let stand = Stand::start().await;
+    let b = &stand.browser;
     let mut session = common::example("pump-single-plane-noisy.json")["session"].clone();
     session["name"] = json!("weak trial");
     // The trial changed the reading by 1 % and 1°: far below the 30 % / 30° field practice.
@@ -90,7 +79,7 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do() {
     let trial = &mut session["runs"][1]["readings"][0];
     trial["amplitude"] = json!(reference["amplitude"].as_f64().unwrap() * 1.01);
     trial["phase_deg"] = json!(reference["phase_deg"].as_f64().unwrap() + 1.0);
-    import(&b, &dir, "weak.json", &session).await;
+    import(b, &stand.dir, "weak.json", &session).await;
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
     let warning = b
@@ -101,13 +90,13 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do() {
     assert!(text.contains("bigger trial weight"), "{text}");
     b.viewport(1280, 800).await;
     b.screenshot("solution-warning-1280").await;
-    b.close().await;
-    server.shutdown().await;
+    stand.stop().await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
-    let (_dir, server, b) = start().await;
+    let stand = Stand::start().await;
+    let b = &stand.browser;
     // The contract's example correction, rendered by the page's own module.
     let script = r#"
         const [done] = arguments;
@@ -134,6 +123,5 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
             "≤ 7.9"
         ])
     );
-    b.close().await;
-    server.shutdown().await;
+    stand.stop().await;
 }

@@ -4,6 +4,8 @@
 import { h, $, $$ } from "./dom.js";
 import { check } from "./num.js";
 
+const INCOMPLETE = /^([+-]?[.,]?|[+-]?\d+([.,]\d*)?[eE][+-]?)$/;
+
 function wrap(input, extraClass) {
   const msg = h("span", { class: "msg", role: "alert" });
   return h("span", { class: `field ${extraClass || ""}` }, input, msg);
@@ -48,7 +50,9 @@ export function numberInput({ field, kind, value, required = true, onValue, labe
     return r;
   };
   input.addEventListener("input", () => {
-    const r = validate(false);
+    // A sign, a point or an exponent just typed is a number being written, not a bad one.
+    const r = INCOMPLETE.test(input.value.trim()) ? { empty: true } : validate(false);
+    if (INCOMPLETE.test(input.value.trim())) mark(input, "");
     onValue(r.error || r.empty ? null : r.value);
   });
   // Leaving a cell keeps a "required" mark that a check put there until it is filled.

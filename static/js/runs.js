@@ -182,14 +182,14 @@ export function renderRuns(root, solve) {
     root,
     h("h2", {}, "2 · Runs"),
     h("p", { class: "lead" }, d && d.zero && d.index === null
-      ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell."
+      ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell, Enter stores the run."
       : d && d.check
         ? "Check run: fit the corrections below, take every trial weight off, run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
         : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
     d ? h("div", { class: "draft" },
       h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
       d.zero ? "" : weightsEditor(d, k, rerender)) : "",
-    grid(rerender),
+    h("div", { onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root); } } }, grid(rerender)),
     h("div", { class: "actions" },
       d ? [
         h("button", { type: "button", class: "primary store", onclick: () => store(root) },

@@ -14,6 +14,12 @@ function items(data) {
   return [];
 }
 
+/** An RFC 3339 time as local date and time. */
+function when(rfc3339) {
+  const t = rfc3339 ? new Date(rfc3339) : null;
+  return t && !Number.isNaN(t.getTime()) ? t.toLocaleString() : rfc3339 || "";
+}
+
 /** A CSV field: quoted, and guarded against spreadsheet formulas. */
 function csvField(v) {
   let t = v === null || v === undefined ? "" : String(v);
@@ -91,7 +97,7 @@ export async function renderSessions(root, open, imported) {
     replace(list, found.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No stored sessions yet.")) : found.map((x) => h("tr", {},
       h("td", {}, h("button", { type: "button", class: "link open-session", dataset: { id: x.id }, onclick: () => open(x.id) }, x.name ?? x.id)),
       h("td", {}, x.machine ?? ""),
-      h("td", {}, x.created_at || x.updated_at || ""),
+      h("td", {}, when(x.created_at), x.runs !== undefined ? h("small", {}, ` · ${x.runs} run${x.runs === 1 ? "" : "s"}`) : ""),
       h("td", {}, h("button", { type: "button", class: "small delete", onclick: async () => {
         if (!window.confirm(`Delete the stored session “${x.name ?? x.id}”?`)) return;
         try { await api.deleteSession(x.id); renderSessions(root, open, imported); } catch (err) { banner(root, "error", err.message); }

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each browser test binary uses a different part of this module
 
 pub mod form;
+pub mod stand;
 
 use std::net::TcpListener;
 use std::path::{Path, PathBuf};
@@ -16,8 +17,8 @@ use hyper_util::client::legacy::connect::HttpConnector;
 const CHROMIUM: &str = "/usr/bin/chromium";
 const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
 
-/// Bounded waits: polls of 100 ms.
-pub const WAIT_POLLS: u32 = 150;
+/// Bounded waits: up to 300 polls of 100 ms (generous: the machine is shared).
+pub const WAIT_POLLS: u32 = 300;
 
 /// A headless Chromium session; dropping it stops chromedriver and its browser.
 pub struct Browser {
@@ -69,7 +70,7 @@ impl Browser {
             tokio::time::sleep(Duration::from_millis(100)).await;
         }
         let mut guard = DriverGuard(Some(driver));
-        assert!(ready, "chromedriver did not listen on {url} within 15 s");
+        assert!(ready, "chromedriver did not listen on {url} within 30 s");
         let args = [
             "--headless",
             "--no-sandbox",
@@ -130,7 +131,7 @@ impl Browser {
             }
             tokio::time::sleep(Duration::from_millis(100)).await;
         }
-        panic!("{} was not downloaded within 15 s", path.display());
+        panic!("{} was not downloaded within 30 s", path.display());
     }
 
     /// Resize the window so that the page's viewport is `width` × `height`.
@@ -177,7 +178,7 @@ impl Browser {
             }
             tokio::time::sleep(Duration::from_millis(100)).await;
         }
-        panic!("no element matches {css} within 15 s");
+        panic!("no element matches {css} within 30 s");
     }
 
     /// Wait (bounded) until `script` returns true.
@@ -193,7 +194,7 @@ impl Browser {
             }
             tokio::time::sleep(Duration::from_millis(100)).await;
         }
-        panic!("{what}: not true within 15 s ({script})");
+        panic!("{what}: not true within 30 s ({script})");
     }
 
     pub async fn click(&self, css: &str) {

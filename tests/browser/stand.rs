@@ -1,0 +1,43 @@
+//! A stand for one browser test: a real server on a temporary SQLite file and
+//! a headless Chromium showing the form.
+
+use serde_json::Value;
+
+use super::Browser;
+
+/// The server (on a file in `dir`) and the browser, with the form loaded.
+pub struct Stand {
+    pub dir: tempfile::TempDir,
+    pub server: crate::common::Server,
+    pub browser: Browser,
+}
+
+impl Stand {
+    pub async fn start() -> Stand {
+        let dir = tempfile::tempdir().expect("temporary directory");
+        let (_, server) = crate::common::start_server(&dir.path().join("form.db")).await;
+        let browser = Browser::start().await;
+        browser
+            .client
+            .goto(&server.url("/"))
+            .await
+            .expect("the form loads");
+        browser.wait_for("[data-field=\"name\"]").await;
+        Stand {
+            dir,
+            server,
+            browser,
+        }
+    }
+
+    pub async fn stop(self) {
+        self.browser.close().await;
+        self.server.shutdown().await;
+    }
+}
+
+/// The session and the expected answer of a public example.
+pub fn example_session(name: &str) -> (Value, Value) {
+    let example = crate::common::example(name);
+    (example["session"].clone(), example["expected"].clone())
+}

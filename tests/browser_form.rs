@@ -99,6 +99,21 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         "report title: {title}"
     );
     b.screenshot("report-768").await;
+    // On paper only the report shows: no navigation, no print button.
+    b.emulate_print(true).await;
+    let shown = b
+        .client
+        .execute(
+            "return ['nav.steps', 'header.top', '#step-report .print', '#step-report article']\
+               .map((css) => document.querySelector(css).getClientRects().length > 0)",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(shown, json!([false, false, false, true]));
+    b.viewport(1280, 800).await;
+    b.screenshot("report-print-1280").await;
+    b.emulate_print(false).await;
 
     // The check run starts with the corrections as its weights; readings at the
     // predicted residual (zero for exact data) leave the corrections unchanged.
@@ -186,6 +201,10 @@ async fn a_stored_session_reopens_after_a_reload() {
     // A fresh start at `/` lists it; opening it restores set-up and runs.
     b.client.goto(&stand.server.url("/")).await.unwrap();
     b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("button.open-session").await;
+    b.viewport(768, 1024).await;
+    b.screenshot("sessions-768").await;
+    b.viewport(1280, 800).await;
     b.click("button.open-session").await;
     b.wait_for("#step-runs td.value.amp").await;
     assert_eq!(b.text("#job-title").await, "pump-two-plane-exact · stored");

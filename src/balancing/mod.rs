@@ -8,12 +8,17 @@
 //! values enter (`phasor`) and leave (`solution`).
 
 pub mod conic;
+pub mod diagnostics;
 pub mod error;
+pub mod identify;
 pub mod influence;
 pub mod model;
 pub mod phasor;
 pub mod practical;
+pub mod report;
+pub mod select;
 pub mod solution;
+pub mod solve;
 pub mod validate;
 
 pub use error::{from_json, ErrorKind, InputError};
@@ -58,9 +63,6 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 }
 
 /// Solve a session with options.
-pub fn solve(_session: &Session, _options: &SolveOptions) -> Result<Solution, InputError> {
-    Err(InputError::unsolvable(
-        "not_implemented",
-        "solver not written yet",
-    ))
+pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
+    solve::solve(session, options)
 }

@@ -132,7 +132,7 @@ proptest! {
         prop_assert!(sol.value >= free.value * (1.0 - 1e-7) - 1e-9 * sb);
         for x in perturbations(&sol.x, &bounds, seed ^ 2, 200) {
             let v = objective_value(&a, &b, &x, objective);
-            prop_assert!(sol.value <= v * (1.0 + 1e-6) + 1e-9 * sb);
+            prop_assert!(sol.value <= v * (1.0 + 1e-6) + 1e-9 * sb, "{} beaten by {} (free {}, active {:?})", sol.value, v, free.value, sol.bound_active);
         }
     }
 
@@ -147,7 +147,9 @@ proptest! {
             .collect();
         let sol = solve_cone(&a, &b, objective, &loose).unwrap();
         prop_assert!(sol.bound_active.iter().all(|&active| !active));
-        prop_assert!((sol.value - free.value).abs() <= 1e-6 * free.value + 1e-9 * sb);
+        // Interior-point accuracy is relative to the data (tolerance 1e-8 of max|b|),
+        // which matters where the optimum is an exact zero.
+        prop_assert!((sol.value - free.value).abs() <= 1e-6 * free.value + 1e-7 * sb, "{} vs {}", sol.value, free.value);
         if ls {
             // Least squares has a unique answer: the SVD one.
             let err = (&sol.x - &x_ls).norm();

@@ -50,12 +50,22 @@ pub fn solve_cone(
     max_abs: &[Option<f64>],
 ) -> Result<ConeSolution, InputError> {
     check_input(a, b, max_abs)?;
-    let (rows, planes) = a.shape();
-    let beta = b.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    let planes = a.ncols();
     // Columns the sensors do not see cannot lower any residual: their best (and
     // least-mass) correction is zero, and leaving them out keeps the cone program
     // free of directions it cannot pin down.
     let live: Vec<usize> = (0..planes).filter(|&j| a.column(j).norm() > 0.0).collect();
+    let mut a_used = a.select_columns(&live);
+    let mut b_used = b.clone();
+    if objective == Objective::LeastSquares && a_used.nrows() > live.len() && !live.is_empty() {
+        // With A = QR (thin), ‖b + Ax‖² = ‖Qᴴb + Rx‖² + ‖(I − QQᴴ)b‖²: the same
+        // minimiser from a planes × planes problem, whatever the number of rows.
+        let qr = a_used.clone().qr();
+        b_used = qr.q().ad_mul(b);
+        a_used = qr.r();
+    }
+    let rows = a_used.nrows();
+    let beta = b_used.iter().map(|z| z.norm()).fold(0.0, f64::max);
     if beta == 0.0 || live.is_empty() {
         let x = DVector::zeros(planes);
         let value = objective_value(a, b, &x, objective);
@@ -70,12 +80,11 @@ pub fn solve_cone(
     // Scale so Clarabel sees numbers of order 1 whatever the units (amplitudes
     // 1e-3..1e3, grams 1..1e4): x_j = β d_j y_j with d_j = 1/‖A_:j‖ and β = max|b_a|
     // gives r/β = b/β + Σ_j (A_:j d_j) y_j, unit columns and a right side of norm ~1.
-    let d: Vec<f64> = live.iter().map(|&j| 1.0 / a.column(j).norm()).collect();
+    let d: Vec<f64> = a_used.column_iter().map(|c| 1.0 / c.norm()).collect();
     let n = live.len();
     let mut scaled = Problem::new(n);
-    // Real form of column k of A d: Re/Im parts, rows × n.
-    let col = |row: usize, k: usize| a[(row, live[k])] * d[k];
-    let rhs = |row: usize| b[row] / beta;
+    let col = |row: usize, k: usize| a_used[(row, k)] * d[k];
+    let rhs = |row: usize| b_used[row] / beta;
     match objective {
         Objective::LeastSquares => scaled.least_squares(rows, col, rhs),
         Objective::MinMax => scaled.min_max(rows, col, rhs),
@@ -97,8 +106,9 @@ pub fn solve_cone(
             bound_active[j] = xj.norm() >= m * (1.0 - BINDING_TOL);
             // The interior point may overshoot the boundary by solver accuracy;
             // the bound is a promise to the fitter, so keep it exactly.
+            // (A hair inside, as m/|x|·x can round a last bit above m.)
             if xj.norm() > m {
-                xj *= m / xj.norm();
+                xj *= m / xj.norm() * (1.0 - 4.0 * f64::EPSILON);
             }
         }
         x[j] = xj;

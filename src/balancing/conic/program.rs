@@ -125,6 +125,11 @@ impl Problem {
             verbose: false,
             max_iter: MAX_ITER,
             time_limit: TIME_LIMIT_S,
+            // Tighter than Clarabel's 1e-8: a small optimal residual beside a large
+            // as-found vibration would otherwise be known to only ~1e-5.
+            tol_gap_abs: 1e-11,
+            tol_gap_rel: 1e-10,
+            tol_feas: 1e-10,
             ..DefaultSettings::default()
         };
         let failed = |why: String| {

@@ -2,7 +2,7 @@
 //! independently of the cone solver, by SVD least squares, Goodman's bounds and
 //! random feasible perturbations.
 
-use fieldbal::balancing::conic::{objective_value, solve_cone};
+use fieldbal::balancing::conic::{objective_value, solve_cone, solve_cone_within, Limits};
 use fieldbal::balancing::model::Objective;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
@@ -285,4 +285,35 @@ fn unsolvable_cone_problems_are_rejected_with_422_codes() {
             assert_eq!(err.code, code, "{what}");
         }
     }
+}
+
+#[test]
+fn a_solve_cut_off_by_its_limits_is_a_422_not_a_hang() {
+    let (a, b) = random_problem(13, 11, 4, 1.0, 80.0);
+    let cut_offs = [
+        (
+            "two iterations",
+            Limits {
+                max_iter: 2,
+                time_limit_s: 5.0,
+            },
+        ),
+        (
+            "a nanosecond",
+            Limits {
+                max_iter: 200,
+                time_limit_s: 1e-9,
+            },
+        ),
+    ];
+    for (what, limits) in cut_offs {
+        for objective in [Objective::LeastSquares, Objective::MinMax] {
+            let bounds = [Some(1.0), None, None, None];
+            let err = solve_cone_within(&a, &b, objective, &bounds, limits).unwrap_err();
+            assert_eq!(err.kind, fieldbal::balancing::ErrorKind::Invalid, "{what}");
+            assert_eq!(err.code, "solver_failed", "{what}: {}", err.message);
+        }
+    }
+    // The same problem within the default limits solves.
+    assert!(solve_cone_within(&a, &b, Objective::MinMax, &[None; 4], Limits::default()).is_ok());
 }

@@ -16,11 +16,25 @@ use program::Problem;
 mod program;
 pub mod wiring;
 
-/// Wall-clock limit of one cone solve: a request that does not converge gets a
-/// 422, never a hang. The 1,000-row × 16-plane benchmark solves in milliseconds.
-pub const TIME_LIMIT_S: f64 = 5.0;
-/// Interior-point iteration limit (Clarabel typically needs 10–30).
-pub const MAX_ITER: u32 = 200;
+/// When a cone solve gives up: a request that does not converge gets a 422,
+/// never a hang.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limits {
+    /// Interior-point iterations (Clarabel typically needs 10–30).
+    pub max_iter: u32,
+    /// Wall-clock seconds; the 1,000-row × 16-plane benchmark needs well under one.
+    pub time_limit_s: f64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_iter: 200,
+            time_limit_s: 5.0,
+        }
+    }
+}
+
 /// A bound counts as binding when the mass reaches it to this relative tolerance;
 /// the interior-point solution approaches the boundary only to solver accuracy.
 const BINDING_TOL: f64 = 1e-5;
@@ -48,6 +62,17 @@ pub fn solve_cone(
     b: &DVector<Complex64>,
     objective: Objective,
     max_abs: &[Option<f64>],
+) -> Result<ConeSolution, InputError> {
+    solve_cone_within(a, b, objective, max_abs, Limits::default())
+}
+
+/// [`solve_cone`] with explicit iteration and time limits.
+pub fn solve_cone_within(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    max_abs: &[Option<f64>],
+    limits: Limits,
 ) -> Result<ConeSolution, InputError> {
     check_input(a, b, max_abs)?;
     let planes = a.ncols();
@@ -97,7 +122,7 @@ pub fn solve_cone(
     for &(k, m) in &bounds {
         scaled.bound(k, m);
     }
-    let (y, iterations, status) = scaled.solve()?;
+    let (y, iterations, status) = scaled.solve(limits)?;
     let mut x = DVector::zeros(planes);
     let mut bound_active = vec![false; planes];
     for (k, &j) in live.iter().enumerate() {

@@ -5,7 +5,7 @@ use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 use num_complex::Complex64;
 
-use super::{MAX_ITER, TIME_LIMIT_S};
+use super::Limits;
 use crate::balancing::error::InputError;
 
 /// Clarabel's standard form `min ½zᵀPz + qᵀz  s.t.  b − Az ∈ K`, assembled in
@@ -116,15 +116,15 @@ impl Problem {
     }
 
     /// Run Clarabel; the complex solution y, iterations and status, or a 422.
-    pub(super) fn solve(self) -> Result<(Vec<Complex64>, u32, String), InputError> {
+    pub(super) fn solve(self, limits: Limits) -> Result<(Vec<Complex64>, u32, String), InputError> {
         let (m, nv) = (self.rhs.len(), self.vars);
         let (pi, pv): (Vec<usize>, Vec<f64>) = self.p_diag.iter().copied().unzip();
         let p = CscMatrix::new_from_triplets(nv, nv, pi.clone(), pi, pv);
         let a = CscMatrix::new_from_triplets(m, nv, self.ai, self.aj, self.av);
         let settings = DefaultSettings {
             verbose: false,
-            max_iter: MAX_ITER,
-            time_limit: TIME_LIMIT_S,
+            max_iter: limits.max_iter,
+            time_limit: limits.time_limit_s,
             // Tighter than Clarabel's 1e-8: a small optimal residual beside a large
             // as-found vibration would otherwise be known to only ~1e-5.
             tol_gap_abs: 1e-11,
@@ -151,11 +151,15 @@ impl Problem {
                 ))
             }
             SolverStatus::MaxTime => {
-                return Err(failed(format!("no convergence within {TIME_LIMIT_S} s")))
+                return Err(failed(format!(
+                    "no convergence within {} s",
+                    limits.time_limit_s
+                )))
             }
             SolverStatus::MaxIterations => {
                 return Err(failed(format!(
-                    "no convergence within {MAX_ITER} iterations"
+                    "no convergence within {} iterations",
+                    limits.max_iter
                 )))
             }
             other => return Err(failed(format!("{other:?}"))),

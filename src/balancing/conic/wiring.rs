@@ -82,7 +82,7 @@ pub fn correction(
         .map(|(id, m)| Warning {
             code: "mass_limit_active".to_string(),
             message: format!(
-                "the bound of {m} g on plane {id} is binding: the {what} correction there is held at {m} g, less than it would otherwise put there, so the predicted vibration is higher than without the bound. If the plane can take more mass (a heavier weight, or a larger radius), raising max_mass_g for {id} lowers it"
+                "the bound of {m} g on plane {id} is binding: the {what} correction there is held at {m} g, less than it would otherwise put there, so the predicted vibration is higher than without the bound. If the plane can take more mass (a heavier weight, or a larger radius), raising max_mass_g for {id} can lower it"
             ),
             plane: Some(id.clone()),
         })

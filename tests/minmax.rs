@@ -317,3 +317,35 @@ fn a_solve_cut_off_by_its_limits_is_a_422_not_a_hang() {
     // The same problem within the default limits solves.
     assert!(solve_cone_within(&a, &b, Objective::MinMax, &[None; 4], Limits::default()).is_ok());
 }
+
+#[test]
+fn two_planes_that_act_alike_still_get_an_optimal_bounded_answer() {
+    // Plane 2 moves every sensor exactly as plane 0 does, turned by 90°: the
+    // problem is rank-deficient, its optimum value unique, its x not.
+    let (mut a, b) = random_problem(17, 8, 3, 1.0, 50.0);
+    let turned = a.column(0) * Complex64::new(0.0, 1.0);
+    a.set_column(2, &turned);
+    let ls_value = residual(&a, &b, &svd_least_squares(&a, &b)).norm();
+    for objective in [Objective::LeastSquares, Objective::MinMax] {
+        let free = solve_cone(&a, &b, objective, &[None; 3]).unwrap();
+        let bounds = [Some(1e3), Some(1e3), Some(1e3)];
+        let loose = solve_cone(&a, &b, objective, &bounds).unwrap();
+        assert!(
+            (loose.value - free.value).abs() <= 1e-6 * free.value,
+            "{objective:?}"
+        );
+        if objective == Objective::LeastSquares {
+            assert!((free.value - ls_value).abs() <= 1e-6 * ls_value);
+        }
+        let tight = [
+            Some(0.2 * free.x[0].norm()),
+            None,
+            Some(0.2 * free.x[2].norm()),
+        ];
+        let sol = solve_cone(&a, &b, objective, &tight).unwrap();
+        assert!(sol.x[0].norm() <= tight[0].unwrap() && sol.x[2].norm() <= tight[2].unwrap());
+        for x in perturbations(&sol.x, &tight, 23, 300) {
+            assert!(sol.value <= objective_value(&a, &b, &x, objective) * (1.0 + 1e-6));
+        }
+    }
+}

@@ -20,7 +20,16 @@ async fn import(b: &Browser, dir: &tempfile::TempDir, name: &str, content: &Valu
         .send_keys(path.to_str().unwrap())
         .await
         .expect("the file is chosen");
-    b.wait_for("#step-runs td.value.amp").await;
+    // Opened: the title names it and its runs show (an earlier job's grid may still be in the page).
+    let session = content.get("session").unwrap_or(content);
+    let title = format!("{} · stored", session["name"].as_str().expect("a name"));
+    let script = format!(
+        "return document.querySelector('#job-title').textContent === {} && \
+                !document.querySelector('#step-runs').hidden && \
+                !!document.querySelector('#step-runs td.value.amp')",
+        serde_json::to_string(&title).unwrap()
+    );
+    b.wait_until("the imported session is open", &script).await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -123,5 +132,72 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
             "≤ 7.9"
         ])
     );
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_plane_with_fixed_places_shows_its_correction_split_over_two_places() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let mut example = common::example("pump-two-plane-exact.json");
+    example["session"]["planes"][0]["positions"] = json!(12);
+    import(b, &stand.dir, "places.json", &example).await;
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    // 30 g at 255° between places 8 (240°) and 9 (270°), by method 5.1.
+    let (m1, m2) = split(30.0, 255.0, 240.0, 270.0);
+    let want = format!("{m1:.1} g at place 8 (240.0°) + {m2:.1} g at place 9 (270.0°)");
+    let inboard = b
+        .text("#step-solve tr[data-plane=\"inboard\"] .corr-split")
+        .await;
+    assert_eq!(inboard, want);
+    let outboard = b
+        .text("#step-solve tr[data-plane=\"outboard\"] .corr-split")
+        .await;
+    assert_eq!(
+        outboard, "–",
+        "a plane without fixed places takes the weight at any angle"
+    );
+    stand.stop().await;
+}
+
+/// Method 5.1: a correction `m` at `theta` between places at `a1` and `a2`.
+fn split(m: f64, theta: f64, a1: f64, a2: f64) -> (f64, f64) {
+    let s = |deg: f64| deg.to_radians().sin();
+    (
+        m * s(a2 - theta) / s(a2 - a1),
+        m * s(theta - a1) / s(a2 - a1),
+    )
+}
+
+/// Whether the polar plot's "90°" label sits right of the centre (clockwise from 0° at the top).
+async fn ninety_is_clockwise(b: &Browser) -> bool {
+    let v = b
+        .client
+        .execute(
+            "const t = [...document.querySelectorAll('#step-solve svg.polar .angle-label')]\
+               .find((e) => e.textContent === '90°');\
+             return Number(t.getAttribute('x')) > 150;",
+            vec![],
+        )
+        .await
+        .expect("the label is there");
+    v == json!(true)
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for_lead() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    for (phase, clockwise) in [("lag", true), ("lead", false)] {
+        let mut example = common::example("pump-single-plane-noisy.json");
+        example["session"]["conventions"] = json!({ "phase": phase });
+        example["session"]["name"] = json!(format!("phase {phase}"));
+        import(b, &stand.dir, &format!("{phase}.json"), &example).await;
+        b.click("#step-runs button.go-solve").await;
+        b.click("#step-solve button.solve").await;
+        b.wait_for("#step-solve svg.polar").await;
+        assert_eq!(ninety_is_clockwise(b).await, clockwise, "phase {phase}");
+    }
     stand.stop().await;
 }

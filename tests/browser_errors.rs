@@ -98,3 +98,46 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field()
     );
     stand.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_field_marked() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, _) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    b.wait_for(&field("runs[0].readings[0].amplitude")).await;
+    // The answer the service gives to a bad set-up when the zero run is posted.
+    let script = r#"
+        const [done] = arguments;
+        import('/static/js/fields.js').then((m) => done(m.markServerError(
+          { field: 'planes[1].radius_mm', message: 'the radius of 1e9 mm is beyond the plausible limit' },
+          'runs[0].')));
+    "#;
+    let found = b.client.execute_async(script, vec![]).await.unwrap();
+    assert_eq!(found, json!(true));
+    let setup_shown = b
+        .client
+        .execute(
+            "return !document.querySelector('#step-setup').hidden",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(setup_shown, json!(true));
+    let msg = format!(".field.bad:has({}) .msg", field("planes[1].radius_mm"));
+    assert_eq!(
+        b.text(&msg).await,
+        "the radius of 1e9 mm is beyond the plausible limit"
+    );
+    let focused = b
+        .client
+        .active_element()
+        .await
+        .unwrap()
+        .attr("data-field")
+        .await
+        .unwrap();
+    assert_eq!(focused.as_deref(), Some("planes[1].radius_mm"));
+    stand.stop().await;
+}

@@ -13,7 +13,8 @@ import { renderSessions } from "./sessions.js";
 const STEPS = ["setup", "runs", "solve", "report", "sessions"];
 let current = "setup";
 
-function show(step) {
+/** Make `step` the visible one, keeping what it shows (and any marks in it). */
+function reveal(step) {
   current = step;
   for (const name of STEPS) {
     $(`#step-${name}`).hidden = name !== step;
@@ -21,6 +22,11 @@ function show(step) {
     tab.classList.toggle("current", name === step);
     tab.setAttribute("aria-current", name === step ? "step" : "false");
   }
+}
+
+/** Show `step`, drawn afresh from the job's state. */
+function show(step) {
+  reveal(step);
   const root = $(`#step-${step}`);
   if (step === "setup") renderSetup(root, () => show("runs"));
   if (step === "runs") {
@@ -93,6 +99,8 @@ onChange(() => {
   updateHeader();
   if (current === "runs") renderRuns($("#step-runs"), () => show("solve"));
 });
+
+document.addEventListener("fieldbal:reveal", (e) => reveal(e.detail));
 
 for (const tab of $$("nav [data-step]")) tab.addEventListener("click", () => show(tab.dataset.step));
 

@@ -122,13 +122,20 @@ export function markServerError(err, prefix = "") {
   const candidates = [path];
   if (prefix && !path.startsWith("runs[")) candidates.unshift(prefix + path);
   for (const candidate of candidates) {
-    // Walk up the path so that `planes[1]` still finds `planes[1].id`.
+    // Walk up the path so that `planes[1]` still finds `planes[1].id`, but not
+    // above the prefix: `runs[0].planes[1]` is no field of the run being typed.
+    const floor = candidate.startsWith(prefix) && prefix ? prefix.length : 0;
     let p = candidate;
-    while (p) {
+    while (p && p.length > floor) {
       const input = document.querySelector(`[data-field="${CSS.escape(p)}"]`) ||
         document.querySelector(`[data-field^="${CSS.escape(p)}."]`);
       if (input && !input.disabled) {
         mark(input, err.message);
+        // A set-up field named while the runs step is shown: bring its step into view first.
+        const section = input.closest("section.step");
+        if (section && section.hidden) {
+          document.dispatchEvent(new CustomEvent("fieldbal:reveal", { detail: section.id.replace(/^step-/, "") }));
+        }
         input.focus();
         return true;
       }

@@ -141,3 +141,125 @@ async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_fi
     assert_eq!(focused.as_deref(), Some("planes[1].radius_mm"));
     stand.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-exact.json");
+    let right = form::typed(&session["runs"][1]["readings"][0]["amplitude"]);
+    let mut mistyped = session.clone();
+    mistyped["runs"][1]["readings"][0]["amplitude"] = json!(1037.1644583458099);
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    form::type_run(b, &mistyped, 0, false).await;
+    form::type_run(b, &mistyped, 1, false).await;
+
+    let corrects = b
+        .client
+        .find_all(Locator::Css("#step-runs button.correct"))
+        .await
+        .unwrap();
+    corrects[1].click().await.unwrap();
+    let cell = field("runs[1].readings[0].amplitude");
+    assert_eq!(form::value_of(b, &cell).await, "1037.1644583458099");
+    type_into(b, &cell, &right).await;
+    form::store(b).await;
+
+    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    let id = list["sessions"][0]["id"].as_str().unwrap().to_string();
+    let versions: Value = reqwest::get(stand.server.url(&format!(
+        "/api/v1/sessions/{id}/runs/trial%20inboard/versions"
+    )))
+    .await
+    .unwrap()
+    .json()
+    .await
+    .unwrap();
+    assert_eq!(versions.as_array().map(Vec::len), Some(2), "{versions}");
+    assert_eq!(versions[1]["current"], json!(true));
+    assert_eq!(
+        form::typed(&versions[1]["run"]["readings"][0]["amplitude"]),
+        right
+    );
+
+    form::type_run(b, &session, 2, false).await;
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    let shown = form::corrections_on_page(b).await;
+    for (want, (plane, mass, _)) in expected["corrections"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(&shown)
+    {
+        let want_mass = want["mass_g"].as_f64().unwrap();
+        assert!(
+            (mass - want_mass).abs() <= 0.051,
+            "{plane}: {mass} g, {want_mass} g expected"
+        );
+    }
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn typed_numbers_are_accepted_or_refused_as_the_table_says() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    // (typed text, kind of field, the number it gives or the message shown)
+    let table: &[(&str, &str, Result<f64, &str>)] = &[
+        ("12.5", "amplitude", Ok(12.5)),
+        ("12,5", "amplitude", Ok(12.5)),
+        (" 7 ", "phase", Ok(7.0)),
+        ("1e3", "amplitude", Ok(1000.0)),
+        (".5", "mass", Ok(0.5)),
+        ("0", "amplitude", Ok(0.0)),
+        ("12", "positions", Ok(12.0)),
+        ("", "amplitude", Err("required")),
+        ("12x", "amplitude", Err("not a number")),
+        ("1.2.3", "phase", Err("not a number")),
+        ("Infinity", "amplitude", Err("not a number")),
+        ("NaN", "phase", Err("not a number")),
+        ("1e400", "amplitude", Err("number too large")),
+        ("-1", "amplitude", Err("amplitude must be 0 or more")),
+        ("720", "phase", Err("phase in degrees, 0 to 360")),
+        ("0", "mass", Err("mass in grams, more than 0")),
+        ("-5", "radius", Err("radius in mm, more than 0")),
+        (
+            "2.5",
+            "positions",
+            Err("a whole number of places, 2 or more"),
+        ),
+        ("1", "positions", Err("a whole number of places, 2 or more")),
+        ("0", "speed", Err("speed in rpm, more than 0")),
+    ];
+    let cases: Vec<Value> = table
+        .iter()
+        .map(|(text, kind, _)| json!([text, kind]))
+        .collect();
+    let script = r#"
+        const [cases, done] = arguments;
+        import('/static/js/num.js').then((m) => done(cases.map(([text, kind]) => m.check(text, kind))));
+    "#;
+    let got = b
+        .client
+        .execute_async(script, vec![json!(cases)])
+        .await
+        .unwrap();
+    for ((text, kind, want), got) in table.iter().zip(got.as_array().unwrap()) {
+        match want {
+            Ok(x) => assert_eq!(got["value"].as_f64(), Some(*x), "{text:?} as {kind}: {got}"),
+            Err(msg) => assert_eq!(
+                got["error"].as_str(),
+                Some(*msg),
+                "{text:?} as {kind}: {got}"
+            ),
+        }
+    }
+    stand.stop().await;
+}

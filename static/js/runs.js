@@ -54,7 +54,8 @@ function editDraft(index) {
     carry: false,
     cells: rows().map((row) => {
       const r = readingFor(run, row);
-      return { amplitude: r ? r.amplitude : null, phase_deg: r ? r.phase_deg : null };
+      // Repeated samples stay with a reading whose mean is not retyped.
+      return r ? { amplitude: r.amplitude, phase_deg: r.phase_deg, samples: r.samples, mean: [r.amplitude, r.phase_deg] } : { amplitude: null, phase_deg: null };
     }),
   };
 }
@@ -66,7 +67,12 @@ function draftRun() {
   return {
     id: d.id,
     weights: [...carried, ...d.weights].map((w) => ({ plane: w.plane, mass_g: w.mass_g, angle_deg: w.angle_deg })),
-    readings: rows().map((row, i) => ({ speed_rpm: row.speed, sensor: row.sensor, amplitude: d.cells[i].amplitude, phase_deg: d.cells[i].phase_deg })),
+    readings: rows().map((row, i) => {
+      const c = d.cells[i];
+      const reading = { speed_rpm: row.speed, sensor: row.sensor, amplitude: c.amplitude, phase_deg: c.phase_deg };
+      if (c.samples && c.mean[0] === c.amplitude && c.mean[1] === c.phase_deg) reading.samples = c.samples;
+      return reading;
+    }),
   };
 }
 

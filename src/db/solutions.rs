@@ -2,10 +2,10 @@
 //! run versions it used and the fieldbal version that computed it.
 
 use serde::{Deserialize, Serialize};
-use sqlx::{Row, SqlitePool};
+use sqlx::Row;
 use utoipa::ToSchema;
 
-use super::{begin_write, sessions, StoreError};
+use super::{sessions, Db, StoreError};
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::{InputError, Solution};
 
@@ -34,14 +34,14 @@ pub struct StoredSolution {
 /// Solve the stored session with `solve` and store the solution; nothing is
 /// stored when `solve` rejects the session or the options.
 pub async fn solve_and_store(
-    pool: &SqlitePool,
+    db: &Db,
     id: &str,
     options: &SolveOptions,
     solve: impl FnOnce(&Session) -> Result<Solution, InputError>,
 ) -> Result<StoredSolution, StoreError> {
     // Read the session and its run versions from one snapshot; solve outside
     // the write lock, and record exactly which versions were used.
-    let mut read = pool.begin().await?;
+    let mut read = db.pool.begin().await?;
     let (seq, session) = sessions::load(&mut read, id).await?;
     let runs: Vec<UsedRun> =
         sqlx::query("SELECT run_id, version FROM runs WHERE session_seq = ? ORDER BY position")
@@ -58,7 +58,7 @@ pub async fn solve_and_store(
 
     let solution = serde_json::to_value(solve(&session).map_err(StoreError::Invalid)?)?;
     let fieldbal_version = env!("CARGO_PKG_VERSION").to_string();
-    let mut tx = begin_write(pool).await?;
+    let mut tx = db.begin_write().await?;
     // The session may have been deleted meanwhile: then nothing is inserted.
     let row = sqlx::query(
         "INSERT INTO solutions (session_seq, options, run_versions, solution, fieldbal_version)
@@ -85,14 +85,14 @@ pub async fn solve_and_store(
 }
 
 /// Every stored solution of a session, oldest first.
-pub async fn list(pool: &SqlitePool, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
-    let seq = sessions::seq_of(pool, id).await?;
+pub async fn list(db: &Db, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
+    let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
          FROM solutions WHERE session_seq = ? ORDER BY seq",
     )
     .bind(seq)
-    .fetch_all(pool)
+    .fetch_all(&db.pool)
     .await?;
     rows.iter()
         .map(|r| {

@@ -70,7 +70,7 @@ pub async fn create_solution(
     Path(id): Path<String>,
     OptionsBody(options): OptionsBody,
 ) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
-    let stored = db::solutions::solve_and_store(&state.pool, &id, &options, |session| {
+    let stored = db::solutions::solve_and_store(&state.db, &id, &options, |session| {
         balancing::solve(session, &options).map_err(within_options)
     })
     .await?;
@@ -87,7 +87,7 @@ pub async fn list_solutions(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<Vec<StoredSolution>>, ApiError> {
-    Ok(Json(db::solutions::list(&state.pool, &id).await?))
+    Ok(Json(db::solutions::list(&state.db, &id).await?))
 }
 
 #[cfg(test)]

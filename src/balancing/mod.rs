@@ -13,6 +13,7 @@ pub mod model;
 pub mod phasor;
 pub mod practical;
 pub mod solution;
+pub mod uncertainty;
 pub mod validate;
 
 pub use error::{from_json, ErrorKind, InputError};

@@ -70,11 +70,33 @@ fn read(path: &std::path::Path) -> Result<Vec<u8>, InputError> {
 fn solve_file_inner(
     file: &std::path::Path,
     options: Option<&std::path::Path>,
-) -> Result<balancing::Solution, InputError> {
-    let (session, mut opts) = balancing::parse_session_file(&read(file)?)?;
+) -> Result<serde_json::Value, InputError> {
+    let bytes = read(file)?;
+    let value: serde_json::Value = balancing::from_json(&bytes)?;
+    if value.get("cases").is_some() {
+        return identify_cases(&bytes);
+    }
+    let (session, mut opts) = balancing::parse_session_file(&bytes)?;
     if let Some(path) = options {
         opts =
             balancing::from_json::<SolveOptions>(&read(path)?).map_err(|e| e.under("options"))?;
     }
-    balancing::solve(&session, &opts)
+    let solution = balancing::solve(&session, &opts)?;
+    Ok(serde_json::to_value(solution).expect("solution serialises"))
+}
+
+/// A file of worked identification cases (method §6): estimate each one.
+fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
+    #[derive(serde::Deserialize)]
+    struct Cases {
+        cases: Vec<balancing::identify::Case>,
+    }
+    let file: Cases = balancing::from_json(bytes)?;
+    let mut out = Vec::with_capacity(file.cases.len());
+    for (i, case) in file.cases.iter().enumerate() {
+        let estimate = balancing::identify::estimate_case(case)
+            .map_err(|e| e.under(&format!("cases[{i}]")))?;
+        out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
+    }
+    Ok(serde_json::json!({ "cases": out }))
 }

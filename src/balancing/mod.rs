@@ -7,12 +7,17 @@
 //! complex-linear in it. The session's own conventions are applied only when
 //! values enter (`phasor`) and leave (`solution`).
 
+pub mod diagnostics;
 pub mod error;
+pub mod identify;
 pub mod influence;
 pub mod model;
 pub mod phasor;
 pub mod practical;
+pub mod report;
+pub mod select;
 pub mod solution;
+pub mod solve;
 pub mod uncertainty;
 pub mod validate;
 
@@ -58,9 +63,6 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 }
 
 /// Solve a session with options.
-pub fn solve(_session: &Session, _options: &SolveOptions) -> Result<Solution, InputError> {
-    Err(InputError::unsolvable(
-        "not_implemented",
-        "solver not written yet",
-    ))
+pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
+    solve::solve(session, options)
 }

@@ -1,0 +1,135 @@
+//! Can the numbers be trusted? Plane independence (Darlow's significance
+//! factors, method §4 "Conditioning") and the size of each trial's effect.
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+/// Below this significance factor a plane counts as dependent (Darlow).
+pub const SIGNIFICANCE_THRESHOLD: f64 = 0.2;
+/// Field practice: a trial should change some reading by at least 30 % (method §4).
+pub const TRIAL_EFFECT_THRESHOLD: f64 = 0.3;
+
+/// Darlow's significance factors of the columns of `a` (rows × planes).
+///
+/// Columns are scaled to unit norm; Gram–Schmidt with pivoting picks at each
+/// step the column with the largest part orthogonal to those already picked,
+/// and that part's norm is its factor. The first plane picked gets 1; a plane
+/// whose column is nearly a combination of more significant ones gets nearly 0.
+/// Returned in column order.
+pub fn significance_factors(a: &DMatrix<Complex64>) -> Vec<f64> {
+    let n = a.ncols();
+    let mut cols: Vec<DVector<Complex64>> = (0..n)
+        .map(|j| {
+            let c = a.column(j).clone_owned();
+            let norm = c.norm();
+            if norm > 0.0 {
+                c / Complex64::from(norm)
+            } else {
+                c
+            }
+        })
+        .collect();
+    let mut factor = vec![0.0; n];
+    let mut left: Vec<usize> = (0..n).collect();
+    while !left.is_empty() {
+        let (pos, &j) = left
+            .iter()
+            .enumerate()
+            .max_by(|(_, &x), (_, &y)| cols[x].norm().total_cmp(&cols[y].norm()))
+            .expect("non-empty");
+        left.swap_remove(pos);
+        let norm = cols[j].norm();
+        factor[j] = norm;
+        if norm <= 1e-14 {
+            continue;
+        }
+        let q = &cols[j] / Complex64::from(norm);
+        for &k in &left {
+            let proj = q.dotc(&cols[k]);
+            cols[k] -= &q * proj;
+        }
+    }
+    factor
+}
+
+/// `cond(A)` after scaling the columns to unit norm: σ_max/σ_min, capped at 1e16.
+pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
+    let mut s = a.clone();
+    for mut col in s.column_iter_mut() {
+        let norm = col.norm();
+        if norm > 0.0 {
+            col /= Complex64::from(norm);
+        }
+    }
+    let sv = s.singular_values();
+    let (max, min) = (sv.max(), sv.min());
+    if max == 0.0 {
+        return 1e16;
+    }
+    (max / min.max(max * 1e-16)).min(1e16)
+}
+
+/// Largest change a plane's trial weight made at any of `rows`, relative to the
+/// reference amplitude there: `max_a |W_aj|·t_j / |Y0_a|`, with `t_j` the
+/// largest trial mass used in plane `j`. Rows with zero reference amplitude are skipped.
+pub fn trial_effect_ratio(
+    w: &DMatrix<Complex64>,
+    y0: &DVector<Complex64>,
+    t: &DMatrix<Complex64>,
+    j: usize,
+    rows: &[usize],
+) -> f64 {
+    let trial = t.row(j).iter().map(|x| x.norm()).fold(0.0, f64::max);
+    rows.iter()
+        .filter(|&&a| y0[a].norm() > 0.0)
+        .map(|&a| w[(a, j)].norm() * trial / y0[a].norm())
+        .fold(0.0, f64::max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(re: f64, im: f64) -> Complex64 {
+        Complex64::new(re, im)
+    }
+
+    #[test]
+    fn independent_planes_have_factors_near_one() {
+        let a = DMatrix::from_row_slice(
+            3,
+            2,
+            &[
+                c(1.0, 0.0),
+                c(0.0, 0.0),
+                c(0.0, 0.0),
+                c(0.0, 2.0),
+                c(0.0, 0.0),
+                c(0.0, 0.0),
+            ],
+        );
+        let f = significance_factors(&a);
+        assert!((f[0] - 1.0).abs() < 1e-12 && (f[1] - 1.0).abs() < 1e-12);
+        assert!((condition_number(&a) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_nearly_parallel_plane_gets_a_small_factor() {
+        // Column 1 is column 0 rotated by a complex factor plus a little: dependent.
+        let a = DMatrix::from_row_slice(
+            2,
+            2,
+            &[c(1.0, 0.0), c(0.0, 1.0), c(1.0, 1.0), c(-1.0, 1.05)],
+        );
+        let f = significance_factors(&a);
+        assert!(f.iter().cloned().fold(1.0, f64::min) < 0.05, "{f:?}");
+        assert!(condition_number(&a) > 20.0);
+    }
+
+    #[test]
+    fn a_plane_that_moves_nothing_has_factor_zero() {
+        let a =
+            DMatrix::from_row_slice(2, 2, &[c(1.0, 0.0), c(0.0, 0.0), c(0.5, 0.0), c(0.0, 0.0)]);
+        assert_eq!(significance_factors(&a)[1], 0.0);
+    }
+}

@@ -1,0 +1,138 @@
+//! Corrections by weighted least squares over all selected sensors and speeds
+//! (method §3, the Den Hartog / Goodman multi-speed method), through the SVD.
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+use super::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD};
+use super::error::InputError;
+use super::influence::influence_matrix;
+use super::model::{Session, SolveOptions};
+use super::report;
+use super::select::{select, Selection};
+use super::solution::{Solution, Warning};
+use super::validate::{check, Checked};
+
+/// Everything a solve computed, in the internal frame (method §1). The report
+/// and the extensions (cone solves, uncertainty) read it.
+#[derive(Debug, Clone)]
+pub struct Fit<'a> {
+    pub checked: Checked<'a>,
+    /// Influence matrix `W`, all rows × all planes (method 2.1).
+    pub w: DMatrix<Complex64>,
+    pub selection: Selection,
+    /// Darlow significance factor of each plane in `selection.planes`.
+    pub factors: Vec<f64>,
+    /// Planes solved for: `selection.planes` less the dropped ones.
+    pub planes: Vec<usize>,
+    /// Planes left out by `drop_dependent_planes`.
+    pub dropped: Vec<usize>,
+    /// Correction `C`, one entry per plane of `planes`.
+    pub c: DVector<Complex64>,
+    /// Predicted vibration `R = Y0 + W C` (3.1) at every row.
+    pub residual: DVector<Complex64>,
+}
+
+/// The weighted problem `min ‖G (Y0 + W C)‖` (3.3) on the used rows and `planes`:
+/// returns `(G W, G Y0)`.
+pub fn weighted_problem(
+    checked: &Checked,
+    w: &DMatrix<Complex64>,
+    selection: &Selection,
+    planes: &[usize],
+) -> (DMatrix<Complex64>, DVector<Complex64>) {
+    let rows = &selection.rows;
+    let a = DMatrix::from_fn(rows.len(), planes.len(), |i, j| {
+        w[(rows[i], planes[j])] * selection.weights[i]
+    });
+    let b = DVector::from_fn(rows.len(), |i, _| {
+        checked.y[(rows[i], 0)] * selection.weights[i]
+    });
+    (a, b)
+}
+
+/// Plain least squares `C = −A⁺ b` (3.2) through the SVD of `A`, never the
+/// normal equations (they square the condition number).
+pub fn least_squares(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+) -> Result<DVector<Complex64>, InputError> {
+    let svd = a.clone().svd(true, true);
+    let eps = 1e-13 * svd.singular_values.max();
+    svd.solve(&(-b), eps)
+        .map_err(|e| InputError::unsolvable("solver_failed", format!("least squares failed: {e}")))
+}
+
+/// The correction for the weighted problem, with any warnings the method adds.
+///
+/// Extension point: the objective and mass bounds of `options` choose the
+/// method here; plain least squares is the default.
+fn correction(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    _options: &SolveOptions,
+    _session: &Session,
+    _planes: &[usize],
+) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
+    Ok((least_squares(a, b)?, Vec::new()))
+}
+
+/// Solve a session: influence coefficients, corrections, predicted residual,
+/// diagnostics, in the session's conventions.
+pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
+    let checked = check(session)?;
+    let w = influence_matrix(&checked)?;
+    let selection = select(&checked, options)?;
+
+    let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
+    let factors = significance_factors(&a_all);
+    let drop = options.drop_dependent_planes.unwrap_or(false);
+    let (planes, dropped): (Vec<usize>, Vec<usize>) = if drop {
+        let keep = |k: &usize| factors[*k] >= SIGNIFICANCE_THRESHOLD;
+        let idx: Vec<usize> = (0..selection.planes.len()).collect();
+        let (kept, gone): (Vec<usize>, Vec<usize>) = idx.into_iter().partition(keep);
+        (
+            kept.iter().map(|&k| selection.planes[k]).collect(),
+            gone.iter().map(|&k| selection.planes[k]).collect(),
+        )
+    } else {
+        (selection.planes.clone(), Vec::new())
+    };
+    if planes.is_empty() {
+        return Err(InputError::invalid(
+            "no_planes",
+            "options.drop_dependent_planes",
+            "every plane was found dependent and dropped: no plane is left to correct in",
+        ));
+    }
+    if selection.rows.len() < planes.len() {
+        return Err(InputError::unsolvable(
+            "too_few_readings",
+            format!(
+                "{} correction planes need at least {} readings (sensor × speed) to balance on; {} are selected",
+                planes.len(),
+                planes.len(),
+                selection.rows.len()
+            ),
+        ));
+    }
+
+    let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
+    let (c, warnings) = correction(&a, &b, options, session, &planes)?;
+    let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
+    let residual = checked.y.column(0) + &w_used * &c;
+
+    let fit = Fit {
+        checked,
+        w,
+        selection,
+        factors,
+        planes,
+        dropped,
+        c,
+        residual,
+    };
+    let mut solution = report::solution(&fit, options, &a);
+    solution.warnings.extend(warnings);
+    Ok(solution)
+}

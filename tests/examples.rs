@@ -1,0 +1,157 @@
+//! Every public example in ../shared/examples solved by the library and by
+//! `fieldbal solve`, compared with its expected answer and tolerance.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use fieldbal::balancing::{self, phasor::angle_diff_deg, Solution};
+use serde_json::Value;
+
+fn examples_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/examples")
+}
+
+/// The example files that carry an expected balancing answer.
+fn balancing_examples() -> Vec<(String, Value)> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(examples_dir()).expect("../shared/examples exists") {
+        let path = entry.unwrap().path();
+        let value: Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+        if value.get("expected").is_some() {
+            out.push((
+                path.file_name().unwrap().to_string_lossy().into_owned(),
+                value,
+            ));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    assert!(
+        out.len() >= 5,
+        "expected the five balancing examples, found {}",
+        out.len()
+    );
+    out
+}
+
+fn assert_matches_expected(name: &str, solution: &Value, expected: &Value) {
+    let tol = &expected["tolerance"];
+    let (mass_rel, angle_deg) = (
+        tol["mass_rel"].as_f64().unwrap(),
+        tol["angle_deg"].as_f64().unwrap(),
+    );
+    let want = expected["corrections"].as_array().unwrap();
+    let got = solution["corrections"].as_array().unwrap();
+    assert_eq!(got.len(), want.len(), "{name}: number of corrections");
+    for w in want {
+        let plane = w["plane"].as_str().unwrap();
+        let g = got
+            .iter()
+            .find(|c| c["plane"] == plane)
+            .unwrap_or_else(|| panic!("{name}: no correction for {plane}"));
+        let (gm, wm) = (g["mass_g"].as_f64().unwrap(), w["mass_g"].as_f64().unwrap());
+        let (ga, wa) = (
+            g["angle_deg"].as_f64().unwrap(),
+            w["angle_deg"].as_f64().unwrap(),
+        );
+        assert!(
+            (gm - wm).abs() <= mass_rel * wm,
+            "{name} {plane}: mass {gm} vs {wm}"
+        );
+        assert!(
+            angle_diff_deg(ga, wa) <= angle_deg,
+            "{name} {plane}: angle {ga} vs {wa}"
+        );
+    }
+}
+
+#[test]
+fn every_example_is_solved_by_the_library_to_its_expected_answer() {
+    for (name, example) in balancing_examples() {
+        let bytes = serde_json::to_vec(&example).unwrap();
+        let (session, options) =
+            balancing::parse_session_file(&bytes).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        let solution: Solution =
+            balancing::solve(&session, &options).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        let value = serde_json::to_value(&solution).unwrap();
+        assert_matches_expected(&name, &value, &example["expected"]);
+    }
+}
+
+#[test]
+fn every_example_is_solved_by_the_command_line_to_its_expected_answer() {
+    for (name, example) in balancing_examples() {
+        let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+            .arg("solve")
+            .arg(examples_dir().join(&name))
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+        let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_matches_expected(&name, &value, &example["expected"]);
+    }
+}
+
+#[test]
+fn noise_free_examples_leave_no_residual_and_raise_no_warning() {
+    for (name, example) in balancing_examples()
+        .into_iter()
+        .filter(|(n, _)| n.contains("exact"))
+    {
+        let (session, options) =
+            balancing::parse_session_file(&serde_json::to_vec(&example).unwrap()).unwrap();
+        let s = balancing::solve(&session, &options).unwrap();
+        assert!(
+            s.summary.rms_after < 1e-9 * s.summary.rms_before,
+            "{name}: {:?}",
+            s.summary
+        );
+        assert!(s.warnings.is_empty(), "{name}: {:?}", s.warnings);
+    }
+}
+
+#[test]
+fn the_command_line_prints_the_contract_error_and_fails_on_a_bad_session() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bad.json");
+    let mut example: Value = serde_json::from_slice(
+        &std::fs::read(examples_dir().join("pump-two-plane-exact.json")).unwrap(),
+    )
+    .unwrap();
+    example["session"]["runs"][1]["weights"][0]["mass_g"] = (-30.0).into();
+    std::fs::write(&path, serde_json::to_vec(&example).unwrap()).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .arg("solve")
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(value["error"]["field"], "session.runs[1].weights[0].mass_g");
+}
+
+#[test]
+fn the_command_line_takes_options_from_a_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let opts = dir.path().join("options.json");
+    std::fs::write(&opts, r#"{"planes": ["inboard"]}"#).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args([
+            "solve",
+            examples_dir()
+                .join("pump-two-plane-exact.json")
+                .to_str()
+                .unwrap(),
+            "--options",
+            opts.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(value["corrections"].as_array().unwrap().len(), 1);
+    assert_eq!(value["corrections"][0]["plane"], "inboard");
+}

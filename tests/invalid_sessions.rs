@@ -1,0 +1,473 @@
+//! A table of invalid sessions and options: each must be rejected with the
+//! error naming the field at fault, and never panic.
+
+use fieldbal::balancing::{self, from_json, ErrorKind, SolveOptions};
+use serde_json::{json, Value};
+
+fn base() -> Value {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/examples/pump-two-plane-exact.json"
+    );
+    let example: Value = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
+    example["session"].clone()
+}
+
+/// Where the error is found: parsing and validation, or solving.
+#[derive(Clone, Copy, Debug)]
+enum Stage {
+    Parse,
+    Solve,
+}
+
+type Mutation = fn(&mut Value);
+
+/// (what is wrong, the change, where it is caught, expected kind, expected field)
+const CASES: &[(&str, Mutation, Stage, ErrorKind, &str)] = &[
+    (
+        "misspelt reading field",
+        |s| {
+            s["runs"][0]["readings"][0]["phase_dg"] = json!(3);
+        },
+        Stage::Parse,
+        ErrorKind::Malformed,
+        "runs[0].readings[0].phase_dg",
+    ),
+    (
+        "misspelt top-level field",
+        |s| {
+            s["nmae"] = json!("x");
+        },
+        Stage::Parse,
+        ErrorKind::Malformed,
+        "nmae",
+    ),
+    (
+        "misspelt plane field",
+        |s| {
+            s["planes"][1]["radius"] = json!(3);
+        },
+        Stage::Parse,
+        ErrorKind::Malformed,
+        "planes[1].radius",
+    ),
+    (
+        "empty name",
+        |s| {
+            s["name"] = json!("  ");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "name",
+    ),
+    (
+        "no planes",
+        |s| {
+            s["planes"] = json!([]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes",
+    ),
+    (
+        "duplicate plane id",
+        |s| {
+            s["planes"][1]["id"] = json!("inboard");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[1].id",
+    ),
+    (
+        "plane id too long",
+        |s| {
+            s["planes"][0]["id"] = json!("x".repeat(65));
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[0].id",
+    ),
+    (
+        "zero radius",
+        |s| {
+            s["planes"][0]["radius_mm"] = json!(0);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[0].radius_mm",
+    ),
+    (
+        "negative radius",
+        |s| {
+            s["planes"][1]["radius_mm"] = json!(-5);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[1].radius_mm",
+    ),
+    (
+        "one fixed place",
+        |s| {
+            s["planes"][0]["positions"] = json!(1);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[0].positions",
+    ),
+    (
+        "fractional places",
+        |s| {
+            s["planes"][0]["positions"] = json!(2.5);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[0].positions",
+    ),
+    (
+        "no sensors",
+        |s| {
+            s["sensors"] = json!([]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "sensors",
+    ),
+    (
+        "unknown unit",
+        |s| {
+            s["sensors"][0]["unit"] = json!("mm");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "sensors[0].unit",
+    ),
+    (
+        "duplicate sensor id",
+        |s| {
+            s["sensors"][1]["id"] = json!("DE-H");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "sensors[1].id",
+    ),
+    (
+        "unknown phase convention",
+        |s| {
+            s["conventions"]["phase"] = json!("lagging");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "conventions.phase",
+    ),
+    (
+        "duplicate run id",
+        |s| {
+            s["runs"][2]["id"] = json!("trial inboard");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[2].id",
+    ),
+    (
+        "no reference run",
+        |s| {
+            s["runs"][0]["weights"] = json!([{"plane": "inboard", "mass_g": 1, "angle_deg": 0}]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs",
+    ),
+    (
+        "two reference runs",
+        |s| {
+            s["runs"][2]["weights"] = json!([]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[2].weights",
+    ),
+    (
+        "weight in an unknown plane",
+        |s| {
+            s["runs"][1]["weights"][0]["plane"] = json!("middle");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].weights[0].plane",
+    ),
+    (
+        "zero trial mass",
+        |s| {
+            s["runs"][1]["weights"][0]["mass_g"] = json!(0);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].weights[0].mass_g",
+    ),
+    (
+        "negative trial mass",
+        |s| {
+            s["runs"][2]["weights"][0]["mass_g"] = json!(-25);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[2].weights[0].mass_g",
+    ),
+    (
+        "NaN as a string",
+        |s| {
+            s["runs"][1]["weights"][0]["mass_g"] = json!("NaN");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].weights[0].mass_g",
+    ),
+    (
+        "huge angle",
+        |s| {
+            s["runs"][1]["weights"][0]["angle_deg"] = json!(1e300);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].weights[0].angle_deg",
+    ),
+    (
+        "reading of an unknown sensor",
+        |s| {
+            s["runs"][0]["readings"][1]["sensor"] = json!("XX");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[1].sensor",
+    ),
+    (
+        "negative amplitude",
+        |s| {
+            s["runs"][0]["readings"][0]["amplitude"] = json!(-1);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[0].amplitude",
+    ),
+    (
+        "implausibly huge amplitude",
+        |s| {
+            s["runs"][1]["readings"][2]["amplitude"] = json!(1e12);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].readings[2].amplitude",
+    ),
+    (
+        "zero speed",
+        |s| {
+            s["runs"][0]["readings"][0]["speed_rpm"] = json!(0);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[0].speed_rpm",
+    ),
+    (
+        "phase as text",
+        |s| {
+            s["runs"][0]["readings"][3]["phase_deg"] = json!("12");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[3].phase_deg",
+    ),
+    (
+        "amplitude missing",
+        |s| {
+            s["runs"][0]["readings"][0]
+                .as_object_mut()
+                .unwrap()
+                .remove("amplitude");
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[0].amplitude",
+    ),
+    (
+        "duplicate reading",
+        |s| {
+            let r = s["runs"][0]["readings"][0].clone();
+            s["runs"][0]["readings"].as_array_mut().unwrap().push(r);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[4]",
+    ),
+    (
+        "duplicate reading within 1 %",
+        |s| {
+            let mut r = s["runs"][1]["readings"][2].clone();
+            r["speed_rpm"] = json!(2960);
+            s["runs"][1]["readings"].as_array_mut().unwrap().push(r);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].readings[4]",
+    ),
+    (
+        "trial run missing a reading",
+        |s| {
+            s["runs"][1]["readings"].as_array_mut().unwrap().remove(3);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].readings",
+    ),
+    (
+        "trial reading at an unpaired speed",
+        |s| {
+            s["runs"][2]["readings"][0]["speed_rpm"] = json!(3100);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[2].readings[0].speed_rpm",
+    ),
+    (
+        "a single sample",
+        |s| {
+            s["runs"][0]["readings"][0]["samples"] = json!([{"amplitude": 1, "phase_deg": 2}]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[0].samples",
+    ),
+    (
+        "negative sample amplitude",
+        |s| {
+            s["runs"][0]["readings"][0]["samples"] =
+                json!([{"amplitude": 1, "phase_deg": 2}, {"amplitude": -1, "phase_deg": 2}]);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[0].samples[1].amplitude",
+    ),
+    (
+        "unknown balance grade",
+        |s| {
+            s["rotor"] = json!({"mass_kg": 420, "service_speed_rpm": 1480, "balance_grade": "G7"});
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "rotor.balance_grade",
+    ),
+    (
+        "zero rotor mass",
+        |s| {
+            s["rotor"] = json!({"mass_kg": 0, "service_speed_rpm": 1480, "balance_grade": "G6.3"});
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "rotor.mass_kg",
+    ),
+    (
+        "both trials in one plane",
+        |s| {
+            s["runs"][2]["weights"][0]["plane"] = json!("inboard");
+        },
+        Stage::Solve,
+        ErrorKind::Invalid,
+        "runs",
+    ),
+    (
+        "fewer trial runs than planes",
+        |s| {
+            s["runs"].as_array_mut().unwrap().pop();
+        },
+        Stage::Solve,
+        ErrorKind::Invalid,
+        "runs",
+    ),
+];
+
+fn reject(session: &Value, stage: Stage) -> balancing::InputError {
+    let bytes = serde_json::to_vec(session).unwrap();
+    match stage {
+        Stage::Parse => balancing::parse_session(&bytes).expect_err("must be rejected"),
+        Stage::Solve => {
+            let parsed = balancing::parse_session(&bytes).expect("valid to store");
+            balancing::solve(&parsed, &SolveOptions::default()).expect_err("must not solve")
+        }
+    }
+}
+
+#[test]
+fn every_invalid_session_is_rejected_with_the_field_at_fault() {
+    assert!(CASES.len() >= 25);
+    assert!(
+        balancing::parse_session(&serde_json::to_vec(&base()).unwrap()).is_ok(),
+        "the base session is valid"
+    );
+    for (what, mutate, stage, kind, field) in CASES {
+        let mut session = base();
+        mutate(&mut session);
+        let err = reject(&session, *stage);
+        assert_eq!(err.field.as_deref(), Some(*field), "{what}: {err:?}");
+        assert_eq!(err.kind, *kind, "{what}: {err:?}");
+        assert!(!err.message.is_empty(), "{what}");
+    }
+}
+
+/// (what is wrong, options, expected field)
+const BAD_OPTIONS: &[(&str, &str, &str)] = &[
+    (
+        "unknown plane",
+        r#"{"planes": ["middle"]}"#,
+        "options.planes[0]",
+    ),
+    ("no plane left", r#"{"planes": []}"#, "options.planes"),
+    (
+        "unknown sensor",
+        r#"{"sensors": ["DE-H", "XX"]}"#,
+        "options.sensors[1]",
+    ),
+    (
+        "unmeasured speed",
+        r#"{"speeds_rpm": [1000]}"#,
+        "options.speeds_rpm[0]",
+    ),
+    (
+        "negative row weight",
+        r#"{"row_weights": [{"sensor": "DE-H", "weight": -1}]}"#,
+        "options.row_weights[0].weight",
+    ),
+    (
+        "row weight matching nothing",
+        r#"{"row_weights": [{"weight": 2}]}"#,
+        "options.row_weights[0]",
+    ),
+    (
+        "unknown objective",
+        r#"{"objective": "median"}"#,
+        "options.objective",
+    ),
+    (
+        "misspelt option",
+        r#"{"speed_rpm": [2950]}"#,
+        "options.speed_rpm",
+    ),
+];
+
+#[test]
+fn every_invalid_option_is_rejected_with_the_field_at_fault() {
+    let session = balancing::parse_session(&serde_json::to_vec(&base()).unwrap()).unwrap();
+    for (what, options, field) in BAD_OPTIONS {
+        let err = from_json::<SolveOptions>(options.as_bytes())
+            .map_err(|e| e.under("options"))
+            .and_then(|o| balancing::solve(&session, &o))
+            .expect_err(what);
+        assert_eq!(err.field.as_deref(), Some(*field), "{what}: {err:?}");
+    }
+}
+
+#[test]
+fn a_trial_reading_within_one_percent_of_the_reference_speed_is_paired() {
+    let mut session = base();
+    session["runs"][1]["readings"][0]["speed_rpm"] = json!(2975);
+    let parsed = balancing::parse_session(&serde_json::to_vec(&session).unwrap()).unwrap();
+    assert!(balancing::solve(&parsed, &SolveOptions::default()).is_ok());
+}

@@ -75,7 +75,7 @@ fn block(d1: Complex64, di: Complex64) -> nalgebra::Matrix2<f64> {
 ///
 /// For a solution that is not the least-squares one (min-max, active mass
 /// bounds), this is the derivative of the least-squares solution taken at `c`:
-/// an approximation, see `solve`.
+/// an approximation, see [`super::fill`].
 pub fn propagate(
     t: &DMatrix<Complex64>,
     y: &DMatrix<Complex64>,

@@ -147,3 +147,7 @@ mod tests {
         assert!((c[(1, 1)] - 2.0 * st2 / 201.0 / 200.0).abs() < 1e-12, "{c}");
     }
 }
+
+#[cfg(test)]
+#[path = "uncertainty/tests.rs"]
+mod region_tests;

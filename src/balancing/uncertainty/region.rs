@@ -11,9 +11,8 @@ use crate::balancing::solution::Uncertainty;
 
 /// 95 % quantile of χ² with 2 degrees of freedom, `−2 ln 0.05`.
 pub const CHI2_2_95: f64 = 5.991_464_547_107_979;
-/// Points on the ellipse boundary searched for the extreme mass and angle; the
-/// error of an extreme is below `(π/N)²/2 ≈ 2·10⁻⁶` of the ellipse's size.
-const BOUNDARY_POINTS: usize = 1440;
+/// Samples of the ellipse boundary before refining an extreme of mass or angle.
+const COARSE_POINTS: usize = 90;
 
 /// Eigen-decomposition of a covariance, variances clipped at 0, larger first.
 fn axes(cov: &Matrix2<f64>) -> [(f64, Vector2<f64>); 2] {
@@ -66,24 +65,18 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
         })
         .sum();
     let (mass, theta) = weight_out(conv, c);
+    let point = boundary(c, &ax, k);
     let (mass_g, angle_deg) = if d2 <= CHI2_2_95 {
-        let max = boundary(c, &ax, k).map(|z| z.norm()).fold(0.0, f64::max);
-        ([0.0, max], [0.0, 360.0])
+        ([0.0, extreme(|t| point(t).norm())], [0.0, 360.0])
+    } else if ax[0].0 == 0.0 {
+        ([mass, mass], [theta, theta])
     } else {
-        let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
-        let (mut dlo, mut dhi) = (0.0f64, 0.0f64);
-        for z in boundary(c, &ax, k) {
-            lo = lo.min(z.norm());
-            hi = hi.max(z.norm());
-            // Angle offset from c's own angle, internal frame (with rotation).
-            let d = (z * c.conj()).arg();
-            dlo = dlo.min(d);
-            dhi = dhi.max(d);
-        }
-        if hi == 0.0 {
-            lo = mass;
-            hi = mass;
-        }
+        // Angle offset from c's own angle, internal frame (with rotation):
+        // smooth on the boundary, within ±90° as the origin is outside.
+        let offset = |t: f64| (point(t) * c.conj()).arg();
+        let lo = -extreme(|t| -point(t).norm());
+        let hi = extreme(|t| point(t).norm());
+        let (dlo, dhi) = (-extreme(|t| -offset(t)), extreme(offset));
         let (a, b) = match conv.angle_direction {
             AngleDirection::WithRotation => (dlo, dhi),
             AngleDirection::AgainstRotation => (-dhi, -dlo),
@@ -102,28 +95,58 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
     }
 }
 
-/// Points `c + k·L·(cos t, sin t)` on the ellipse boundary, `L Lᵀ = Σ`.
-fn boundary(
-    c: Complex64,
-    ax: &[(f64, Vector2<f64>); 2],
-    k: f64,
-) -> impl Iterator<Item = Complex64> + '_ {
+/// The point `c + k·L·(cos t, sin t)` of the ellipse boundary, `L Lᵀ = Σ`.
+fn boundary(c: Complex64, ax: &[(f64, Vector2<f64>); 2], k: f64) -> impl Fn(f64) -> Complex64 {
     let (l1, l2) = (ax[0].0.sqrt() * k, ax[1].0.sqrt() * k);
-    (0..BOUNDARY_POINTS).map(move |i| {
-        let (s, co) = (std::f64::consts::TAU * i as f64 / BOUNDARY_POINTS as f64).sin_cos();
-        let v = ax[0].1 * (l1 * co) + ax[1].1 * (l2 * s);
+    let (v1, v2) = (ax[0].1, ax[1].1);
+    move |t| {
+        let (s, co) = t.sin_cos();
+        let v = v1 * (l1 * co) + v2 * (l2 * s);
         c + Complex64::new(v.x, v.y)
-    })
+    }
+}
+
+/// Maximum of a smooth periodic `f(t)` over `[0, 2π)`: the best of
+/// [`COARSE_POINTS`] samples, refined by golden-section search between its
+/// neighbours (the functions here have at most two local maxima).
+fn extreme(f: impl Fn(f64) -> f64) -> f64 {
+    let step = std::f64::consts::TAU / COARSE_POINTS as f64;
+    let (best, fbest) = (0..COARSE_POINTS)
+        .map(|i| (i as f64 * step, f(i as f64 * step)))
+        .fold(
+            (0.0, f64::NEG_INFINITY),
+            |b, x| if x.1 > b.1 { x } else { b },
+        );
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (best - step, best + step);
+    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    for _ in 0..40 {
+        if f1 < f2 {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+        } else {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+        }
+    }
+    fbest.max(f1).max(f2)
 }
 
 /// The 95 % upper bound of the amplitude `|R|` when `R` is Gaussian with mean
 /// `mean` and covariance `cov` of (Re, Im).
 ///
 /// Not an approximation by a simpler distribution: the 95 % quantile of `|R|`
-/// is found by bisection on `P(|R| ≤ ρ)`, computed by one-dimensional
+/// is found by regula falsi (Illinois) on `P(|R| ≤ ρ) = 0.95` (to 10⁻⁵), computed by one-dimensional
 /// quadrature in the principal axes (`R = μ + σ₁z₁e₁ + σ₂z₂e₂`, σ₁ ≥ σ₂):
 /// `P = ∫ φ(z₁) [Φ((h−μ₂)/σ₂) − Φ((−h−μ₂)/σ₂)] dz₁`, `h = √(ρ² − (μ₁+σ₁z₁)²)`,
-/// over `z₁ ∈ [−9, 9]` (less where `|μ₁+σ₁z₁| > ρ`) by adaptive Simpson on unit panels (tolerance 10⁻⁷; the integrand has
+/// over `z₁ ∈ [−7, 7]` (less where `|μ₁+σ₁z₁| > ρ`) by adaptive Simpson on unit panels (tolerance 10⁻⁷; the integrand has
 /// kinks where `h → 0`, and steps when σ₂ is tiny, which the adaptivity
 /// resolves). Φ is within 1.2·10⁻⁷ (see [`normal_cdf`]). The approximation is
 /// the first-order (Gaussian) error model itself; the test compares the bound
@@ -138,28 +161,51 @@ pub fn amplitude_95(mean: Complex64, cov: &Matrix2<f64>) -> f64 {
     }
     let mu1 = ax[0].1.x * mean.re + ax[0].1.y * mean.im;
     let mu2 = ax[1].1.x * mean.re + ax[1].1.y * mean.im;
-    // P(|R| ≤ |μ| + 4σ₁) ≥ P(χ²₂ ≤ 16) = 1 − e⁻⁸, so the quantile lies below.
-    let (mut lo, mut hi) = (0.0, m + 4.0 * s1);
-    while hi - lo > 1e-7 * hi {
-        let mid = 0.5 * (lo + hi);
-        if inside(mu1, mu2, s1, s2, mid) < 0.95 {
-            lo = mid;
+    // The quantile lies in [|μ|, |μ| + 2.448σ₁]: the disc of radius |μ| lies in
+    // a half-plane through μ (probability ½), and the disc of radius
+    // √5.991·σ₁ around μ holds the χ²₂ 95 % ellipse.
+    // Regula falsi with the Illinois modification: P is smooth and increasing in ρ.
+    let f = |rho: f64| inside(mu1, mu2, s1, s2, rho) - 0.95;
+    let (mut lo, mut hi) = (m, m + CHI2_2_95.sqrt() * s1);
+    let (mut flo, mut fhi) = (f(lo), f(hi));
+    if flo >= 0.0 || fhi <= 0.0 {
+        // Only by quadrature error at the very ends.
+        return if flo >= 0.0 { lo } else { hi };
+    }
+    let mut side = 0;
+    for _ in 0..100 {
+        let x = (lo * fhi - hi * flo) / (fhi - flo);
+        let fx = f(x);
+        if fx.abs() < 1e-5 || hi - lo < 1e-9 * hi {
+            return x;
+        }
+        if fx < 0.0 {
+            lo = x;
+            flo = fx;
+            if side == -1 {
+                fhi /= 2.0;
+            }
+            side = -1;
         } else {
-            hi = mid;
+            hi = x;
+            fhi = fx;
+            if side == 1 {
+                flo /= 2.0;
+            }
+            side = 1;
         }
     }
-    hi
+    0.5 * (lo + hi)
 }
 
 /// `P((μ₁+σ₁z₁)² + (μ₂+σ₂z₂)² ≤ ρ²)` for independent standard normal z₁, z₂.
 fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> f64 {
-    let inner = |z: f64| {
-        let x = mu1 + s1 * z;
-        let h2 = rho * rho - x * x;
-        if h2 <= 0.0 {
-            return 0.0;
-        }
-        let h = h2.sqrt();
+    // In `u` with μ₁+σ₁z₁ = ρ sin u, h = ρ cos u: the square-root kinks of the
+    // integrand where h → 0 become smooth ends, so Simpson converges fast.
+    let inner = |u: f64| {
+        let (sin, cos) = u.sin_cos();
+        let z = (rho * sin - mu1) / s1;
+        let h = rho * cos;
         let p = if s2 > 0.0 {
             normal_cdf((h - mu2) / s2) - normal_cdf((-h - mu2) / s2)
         } else if mu2.abs() <= h {
@@ -167,22 +213,23 @@ fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> f64 {
         } else {
             0.0
         };
-        p * (-0.5 * z * z).exp() / (std::f64::consts::TAU).sqrt()
+        p * (-0.5 * z * z).exp() / (std::f64::consts::TAU).sqrt() * h / s1
     };
-    let a = ((-rho - mu1) / s1).max(-9.0);
-    let b = ((rho - mu1) / s1).min(9.0);
+    let a = ((-rho - mu1) / s1).max(-7.0);
+    let b = ((rho - mu1) / s1).min(7.0);
     if a >= b {
         return 0.0;
     }
-    // Start from panels of at most one unit of z₁: a support narrower than one
-    // panel that all the panel's nodes miss holds under 0.4 of the probability,
-    // so it cannot decide whether P reaches 0.95.
-    let panels = ((b - a).ceil() as usize).max(1);
+    let to_u = |z: f64| ((mu1 + s1 * z) / rho).clamp(-1.0, 1.0).asin();
+    // Start from panels of at most two units of z₁: a support narrower than a
+    // panel, which all the panel's nodes could miss, holds under 0.69 of the
+    // probability, so missing it cannot decide whether P reaches 0.95.
+    let panels = ((0.5 * (b - a)).ceil() as usize).max(1);
     let step = (b - a) / panels as f64;
     (0..panels)
         .map(|i| {
             let lo = a + step * i as f64;
-            simpson(&inner, lo, lo + step, 1e-7 / panels as f64, 40)
+            simpson(&inner, to_u(lo), to_u(lo + step), 1e-6 / panels as f64, 30)
         })
         .sum()
 }

@@ -24,7 +24,7 @@ pub enum Command {
     Serve(crate::http::ServeArgs),
     /// Solve a session file offline and print the solution as JSON.
     Solve {
-        /// Session JSON (a bare session, or an object with `session` and optional `options`).
+        /// Session JSON (a bare session, or an object with `session` and optional `options`); `-` for standard input.
         file: PathBuf,
         /// Solve options JSON (overrides options inside FILE).
         #[arg(long)]
@@ -58,8 +58,15 @@ fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> Exit
     }
 }
 
+/// The file's bytes; `-` reads standard input.
 fn read(path: &std::path::Path) -> Result<Vec<u8>, InputError> {
-    std::fs::read(path).map_err(|e| InputError {
+    let bytes = if path.as_os_str() == "-" {
+        let mut buf = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::stdin(), &mut buf).map(|_| buf)
+    } else {
+        std::fs::read(path)
+    };
+    bytes.map_err(|e| InputError {
         kind: balancing::ErrorKind::Malformed,
         code: "unreadable_file",
         message: format!("cannot read {}: {e}", path.display()),

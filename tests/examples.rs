@@ -155,3 +155,21 @@ fn the_command_line_takes_options_from_a_file() {
     assert_eq!(value["corrections"].as_array().unwrap().len(), 1);
     assert_eq!(value["corrections"][0]["plane"], "inboard");
 }
+
+#[test]
+fn the_command_line_reads_a_session_from_standard_input() {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["solve", "-"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let example = std::fs::read(examples_dir().join("pump-single-plane-noisy.json")).unwrap();
+    child.stdin.take().unwrap().write_all(&example).unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let expected: Value = serde_json::from_slice(&example).unwrap();
+    assert_matches_expected("stdin", &value, &expected["expected"]);
+}

@@ -100,14 +100,14 @@ fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError>
 
 /// A finite number in `(0, max]` (or `[0, max]` when `zero_ok`).
 fn check_positive(
-    field: &str,
+    field: impl FnOnce() -> String,
     x: f64,
     max: f64,
     zero_ok: bool,
     what: &str,
 ) -> Result<(), InputError> {
     if !x.is_finite() {
-        return Err(invalid(field, format!("{what} must be a finite number")));
+        return Err(invalid(field(), format!("{what} must be a finite number")));
     }
     if x < 0.0 || (x == 0.0 && !zero_ok) {
         let bound = if zero_ok {
@@ -115,21 +115,21 @@ fn check_positive(
         } else {
             "greater than 0"
         };
-        return Err(invalid(field, format!("{what} must be {bound}, got {x}")));
+        return Err(invalid(field(), format!("{what} must be {bound}, got {x}")));
     }
     if x > max {
         return Err(invalid(
-            field,
+            field(),
             format!("{what} of {x} is beyond the plausible limit of {max}"),
         ));
     }
     Ok(())
 }
 
-fn check_angle(field: &str, x: f64) -> Result<(), InputError> {
+fn check_angle(field: impl FnOnce() -> String, x: f64) -> Result<(), InputError> {
     if !x.is_finite() || x.abs() > MAX_ANGLE_DEG {
         return Err(invalid(
-            field,
+            field(),
             format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}"),
         ));
     }
@@ -190,9 +190,15 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
         check_text("machine", m, false)?;
     }
     if let Some(r) = &session.rotor {
-        check_positive("rotor.mass_kg", r.mass_kg, 1e7, false, "the rotor mass")?;
         check_positive(
-            "rotor.service_speed_rpm",
+            || "rotor.mass_kg".into(),
+            r.mass_kg,
+            1e7,
+            false,
+            "the rotor mass",
+        )?;
+        check_positive(
+            || "rotor.service_speed_rpm".into(),
             r.service_speed_rpm,
             MAX_SPEED_RPM,
             false,
@@ -216,7 +222,7 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
     for (i, p) in session.planes.iter().enumerate() {
         if let Some(r) = p.radius_mm {
             check_positive(
-                &format!("planes[{i}].radius_mm"),
+                || format!("planes[{i}].radius_mm"),
                 r,
                 MAX_RADIUS_MM,
                 false,
@@ -245,12 +251,12 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
 }
 
 fn check_reading(
-    f: &str,
+    f: &dyn Fn() -> String,
     r: &Reading,
     sensors: &HashMap<&str, usize>,
 ) -> Result<usize, InputError> {
     check_positive(
-        &format!("{f}.speed_rpm"),
+        || format!("{}.speed_rpm", f()),
         r.speed_rpm,
         MAX_SPEED_RPM,
         false,
@@ -259,34 +265,34 @@ fn check_reading(
     let sensor = *sensors.get(r.sensor.as_str()).ok_or_else(|| {
         InputError::invalid(
             "unknown_sensor",
-            format!("{f}.sensor"),
+            format!("{}.sensor", f()),
             format!("no sensor has the id '{}'", r.sensor),
         )
     })?;
     check_positive(
-        &format!("{f}.amplitude"),
+        || format!("{}.amplitude", f()),
         r.amplitude,
         MAX_AMPLITUDE,
         true,
         "the amplitude",
     )?;
-    check_angle(&format!("{f}.phase_deg"), r.phase_deg)?;
+    check_angle(|| format!("{}.phase_deg", f()), r.phase_deg)?;
     if let Some(samples) = &r.samples {
         if samples.len() < 2 {
             return Err(invalid(
-                format!("{f}.samples"),
+                format!("{}.samples", f()),
                 "give at least 2 samples, or leave the list out",
             ));
         }
         for (k, s) in samples.iter().enumerate() {
             check_positive(
-                &format!("{f}.samples[{k}].amplitude"),
+                || format!("{}.samples[{k}].amplitude", f()),
                 s.amplitude,
                 MAX_AMPLITUDE,
                 true,
                 "the amplitude",
             )?;
-            check_angle(&format!("{f}.samples[{k}].phase_deg"), s.phase_deg)?;
+            check_angle(|| format!("{}.samples[{k}].phase_deg", f()), s.phase_deg)?;
         }
     }
     Ok(sensor)
@@ -303,28 +309,28 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     let mut sensor_of: Vec<Vec<usize>> = Vec::with_capacity(session.runs.len());
     for (i, run) in session.runs.iter().enumerate() {
         for (j, w) in run.weights.iter().enumerate() {
-            let f = format!("runs[{i}].weights[{j}]");
+            let f = || format!("runs[{i}].weights[{j}]");
             if !planes.contains_key(w.plane.as_str()) {
                 return Err(InputError::invalid(
                     "unknown_plane",
-                    format!("{f}.plane"),
+                    format!("{}.plane", f()),
                     format!("no plane has the id '{}'", w.plane),
                 ));
             }
             check_positive(
-                &format!("{f}.mass_g"),
+                || format!("{}.mass_g", f()),
                 w.mass_g,
                 MAX_MASS_G,
                 false,
                 "the mass",
             )?;
-            check_angle(&format!("{f}.angle_deg"), w.angle_deg)?;
+            check_angle(|| format!("{}.angle_deg", f()), w.angle_deg)?;
         }
         let s = run
             .readings
             .iter()
             .enumerate()
-            .map(|(j, r)| check_reading(&format!("runs[{i}].readings[{j}]"), r, &sensors))
+            .map(|(j, r)| check_reading(&|| format!("runs[{i}].readings[{j}]"), r, &sensors))
             .collect::<Result<Vec<_>, _>>()?;
         sensor_of.push(s);
         if run.weights.is_empty() {
@@ -359,15 +365,15 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     for &i in &runs {
         let mut map = HashMap::new();
         for (j, r) in session.runs[i].readings.iter().enumerate() {
-            let f = format!("runs[{i}].readings[{j}]");
+            let f = || format!("runs[{i}].readings[{j}]");
             let point = nearest_point(&points, r.speed_rpm).ok_or_else(|| {
-                InputError::invalid("unpaired_reading", format!("{f}.speed_rpm"), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
+                InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
             })?;
             let sensor = sensor_of[i][j];
             if let Some(k) = map.insert((point, sensor), j) {
                 return Err(InputError::invalid(
                     "duplicate_reading",
-                    f,
+                    f(),
                     format!("run '{}' already has a reading of sensor '{}' at this speed (readings[{k}]); put repeated readings in `samples`", session.runs[i].id, r.sensor),
                 ));
             }

@@ -1,0 +1,120 @@
+//! Criterion benchmarks of the whole core solve (validation, influence
+//! coefficients, SVD least squares, report): a two-plane job and a large
+//! multi-speed job (16 planes, 32 sensors, 40 speeds).
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use fieldbal::balancing::model::{
+    Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight,
+};
+use fieldbal::balancing::phasor::{reading_out, weight_out};
+use fieldbal::balancing::solve;
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+/// A deterministic pseudo-random number in [0, 1) (xorshift), so runs compare.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn phasor(&mut self, scale: f64) -> Complex64 {
+        Complex64::from_polar(
+            scale * (0.2 + self.next()),
+            std::f64::consts::TAU * self.next(),
+        )
+    }
+}
+
+/// A noisy session with one removed trial per plane.
+fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let conv = Conventions::default();
+    let rows = sensors * speeds;
+    let w = DMatrix::from_fn(rows, planes, |_, _| rng.phasor(2.0));
+    let u = DVector::from_fn(planes, |_, _| rng.phasor(30.0));
+    let y0 = &w * &u + DVector::from_fn(rows, |_, _| rng.phasor(1.0));
+    let readings = |y: &DVector<Complex64>, rng: &mut Rng| -> Vec<Reading> {
+        (0..rows)
+            .map(|a| {
+                let (amplitude, phase_deg) = reading_out(conv, y[a] + rng.phasor(0.5));
+                let speed_rpm = 500.0 + 250.0 * (a / sensors) as f64;
+                Reading {
+                    speed_rpm,
+                    sensor: format!("S{}", a % sensors),
+                    amplitude,
+                    phase_deg,
+                    samples: None,
+                }
+            })
+            .collect()
+    };
+    let mut runs = vec![Run {
+        id: "zero".into(),
+        weights: vec![],
+        readings: readings(&y0, &mut rng),
+    }];
+    for j in 0..planes {
+        let trial = rng.phasor(40.0);
+        let (mass_g, angle_deg) = weight_out(conv, trial);
+        let y = &y0 + w.column(j) * trial;
+        runs.push(Run {
+            id: format!("trial {j}"),
+            weights: vec![Weight {
+                plane: format!("P{j}"),
+                mass_g,
+                angle_deg,
+            }],
+            readings: readings(&y, &mut rng),
+        });
+    }
+    Session {
+        name: format!("bench {planes}x{sensors}x{speeds}"),
+        machine: None,
+        conventions: Some(conv),
+        rotor: None,
+        planes: (0..planes)
+            .map(|j| Plane {
+                id: format!("P{j}"),
+                radius_mm: Some(150.0),
+                positions: None,
+            })
+            .collect(),
+        sensors: (0..sensors)
+            .map(|k| Sensor {
+                id: format!("S{k}"),
+                unit: Unit::UmPp,
+                label: None,
+            })
+            .collect(),
+        runs,
+    }
+}
+
+fn benches(c: &mut Criterion) {
+    let options = SolveOptions::default();
+    let small = job(2, 4, 1);
+    c.bench_function("solve two planes, 4 sensors, 1 speed", |b| {
+        b.iter(|| solve(black_box(&small), &options).unwrap())
+    });
+    let large = job(16, 32, 40);
+    let mut group = c.benchmark_group("large");
+    group.sample_size(20);
+    group.bench_function("solve 16 planes, 32 sensors, 40 speeds", |b| {
+        b.iter(|| solve(black_box(&large), &options).unwrap())
+    });
+    group.bench_function("validate 16 planes, 32 sensors, 40 speeds", |b| {
+        b.iter(|| {
+            fieldbal::balancing::validate::check(black_box(&large))
+                .unwrap()
+                .rows
+                .len()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(core, benches);
+criterion_main!(core);

@@ -55,9 +55,21 @@ fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<Complex64>)
     (pinv, gram_inv)
 }
 
-/// Real 2×2 Jacobian block from the responses to a perturbation by 1 and by i.
-fn block(d1: Complex64, di: Complex64) -> nalgebra::Matrix2<f64> {
-    Matrix2::new(d1.re, di.re, d1.im, di.im)
+/// Real 2×2 matrix of the real-linear map `δ ↦ α δ + β δ̄` on (Re δ, Im δ).
+fn real_map(alpha: Complex64, beta: Complex64) -> Matrix2<f64> {
+    Matrix2::new(
+        alpha.re + beta.re,
+        beta.im - alpha.im,
+        alpha.im + beta.im,
+        alpha.re - beta.re,
+    )
+}
+
+/// A square root `S` of a covariance, `S Sᵀ = Σ` (negative eigenvalues clipped).
+fn sqrt_psd(cov: &Matrix2<f64>) -> Matrix2<f64> {
+    let e = nalgebra::SymmetricEigen::new((cov + cov.transpose()) / 2.0);
+    let d = e.eigenvalues.map(|l| l.max(0.0).sqrt());
+    e.eigenvectors * Matrix2::from_diagonal(&d)
 }
 
 /// Propagate reading noise to the correction and the residual.
@@ -72,6 +84,12 @@ fn block(d1: Complex64, di: Complex64) -> nalgebra::Matrix2<f64> {
 /// `dC = −A⁺(dA C + db) − (AᴴA)⁻¹ dAᴴ r`. The second term vanishes for an exact
 /// fit and is what makes `dC` not complex-linear. `dW = (dY_trial − dY0 1ᵀ) T⁺`
 /// (2.1), `dR = dY0 + dW[:,p] C + W[:,p] dC` (3.1).
+///
+/// A reading `(a, k)` moves only row `a` of `W`, by `δ ω_k` with `ω_0 = −1ᵀT⁺`
+/// and `ω_k = T⁺[k−1, :]`, so `dC = α δ + β δ̄` with
+/// `α = −g λ_k A⁺[:, i]`, `β = −g r_i (AᴴA)⁻¹ ω̄_k`, where `λ_k = ω_k·C (+1 for
+/// k = 0)` is also the reading's direct effect on `R_a`. That makes the cost
+/// `O(readings · planes + rows · planes²)`.
 ///
 /// For a solution that is not the least-squares one (min-max, active mass
 /// bounds), this is the derivative of the least-squares solution taken at `c`:
@@ -108,65 +126,92 @@ pub fn propagate(
     for (i, &a) in used_rows.iter().enumerate() {
         position[a] = Some(i);
     }
-
-    // Derivatives of (C, R) for a perturbation `d` of reading (a, k).
-    let respond = |a: usize, k: usize, d: Complex64| -> (DVector<Complex64>, DVector<Complex64>) {
-        let dw: Vec<Complex64> = used_planes
-            .iter()
-            .map(|&j| {
-                if k == 0 {
-                    -d * s[j]
-                } else {
-                    d * tp[(k - 1, j)]
-                }
+    // Per run k: ω_k over the used planes, λ_k, and (AᴴA)⁻¹ ω̄_k.
+    let omega: Vec<DVector<Complex64>> = (0..runs)
+        .map(|k| {
+            DVector::from_fn(q, |j, _| match k {
+                0 => -s[used_planes[j]],
+                _ => tp[(k - 1, used_planes[j])],
             })
-            .collect();
-        let dwc: Complex64 = dw.iter().zip(c.iter()).map(|(x, cj)| x * cj).sum();
-        let dy0 = if k == 0 { d } else { Complex64::from(0.0) };
-        let dc = match position[a] {
-            Some(i) => {
-                let g = row_weights[i];
-                let v = (dwc + dy0) * g;
-                let da_h_r = DVector::from_fn(q, |j, _| (dw[j] * g).conj() * r[i]);
-                -(apinv.column(i) * v) - &gram_inv * da_h_r
-            }
-            None => DVector::zeros(q),
-        };
-        let mut dr = DVector::from_fn(n, |row, _| {
-            (0..q)
-                .map(|j| w[(row, used_planes[j])] * dc[j])
+        })
+        .collect();
+    let lambda: Vec<Complex64> = (0..runs)
+        .map(|k| {
+            omega[k]
+                .iter()
+                .zip(c.iter())
+                .map(|(o, cj)| o * cj)
                 .sum::<Complex64>()
-        });
-        dr[a] += dwc + dy0;
-        (dc, dr)
-    };
+                + if k == 0 { 1.0 } else { 0.0 }
+        })
+        .collect();
+    let g_omega: Vec<DVector<Complex64>> = omega
+        .iter()
+        .map(|o| &gram_inv * o.map(|x| x.conj()))
+        .collect();
 
-    let mut correction_full = DMatrix::zeros(2 * q, 2 * q);
-    let mut residual = vec![Matrix2::zeros(); n];
-    let mut jc = DMatrix::zeros(2 * q, 2);
-    for (a, row_cov) in cov.iter().enumerate().take(n) {
-        for (k, &sigma) in row_cov.iter().enumerate().take(runs) {
-            if sigma == Matrix2::zeros() {
-                continue;
-            }
-            let (dc1, dr1) = respond(a, k, Complex64::new(1.0, 0.0));
-            let (dci, dri) = respond(a, k, Complex64::new(0.0, 1.0));
-            for j in 0..q {
-                jc.fixed_view_mut::<2, 2>(2 * j, 0)
-                    .copy_from(&block(dc1[j], dci[j]));
-            }
-            correction_full += &jc * sigma * jc.transpose();
-            for (row, cr) in residual.iter_mut().enumerate() {
-                let jr = block(dr1[row], dri[row]);
-                *cr += jr * sigma * jr.transpose();
-            }
+    // Whitened Jacobian of C: for reading (a, k) with Σ = S Sᵀ, the 2q × 2 block
+    // J S; then Cov(C) = M Mᵀ. Only used rows move C.
+    let jc = |i: usize, k: usize, sq: &Matrix2<f64>| -> DMatrix<f64> {
+        let g = row_weights[i];
+        let mut m = DMatrix::zeros(2 * q, 2);
+        for j in 0..q {
+            let alpha = -apinv[(j, i)] * lambda[k] * g;
+            let beta = -g_omega[k][j] * r[i] * g;
+            m.fixed_view_mut::<2, 2>(2 * j, 0)
+                .copy_from(&(real_map(alpha, beta) * sq));
+        }
+        m
+    };
+    let roots: Vec<Vec<Matrix2<f64>>> = cov
+        .iter()
+        .take(n)
+        .map(|row| row.iter().take(runs).map(sqrt_psd).collect())
+        .collect();
+    let mut whitened = DMatrix::zeros(2 * q, 2 * used_rows.len() * runs);
+    for (i, &a) in used_rows.iter().enumerate() {
+        for (k, root) in roots[a].iter().enumerate() {
+            whitened
+                .columns_mut(2 * (i * runs + k), 2)
+                .copy_from(&jc(i, k, root));
         }
     }
+    let correction_full = &whitened * whitened.transpose();
     let correction = (0..q)
         .map(|j| {
             correction_full
                 .fixed_view::<2, 2>(2 * j, 2 * j)
                 .into_owned()
+        })
+        .collect();
+
+    // dR_a = W̃_a dC + λ_k δ for the readings of row a: the first part has
+    // covariance W̃ Cov(C) W̃ᵀ; the direct part and its cross terms with dC come
+    // only from row a's own readings.
+    let residual = (0..n)
+        .map(|a| {
+            let wt = DMatrix::from_fn(2, 2 * q, |row, col| {
+                let m = real_map(w[(a, used_planes[col / 2])], Complex64::from(0.0));
+                m[(row, col % 2)]
+            });
+            let through_c = &wt * &correction_full * wt.transpose();
+            let mut out = Matrix2::new(
+                through_c[(0, 0)],
+                through_c[(0, 1)],
+                through_c[(1, 0)],
+                through_c[(1, 1)],
+            );
+            for k in 0..runs {
+                let direct = real_map(lambda[k], Complex64::from(0.0)) * roots[a][k];
+                out += direct * direct.transpose();
+                if let Some(i) = position[a] {
+                    let via = &wt * jc(i, k, &roots[a][k]);
+                    let cross = Matrix2::new(via[(0, 0)], via[(0, 1)], via[(1, 0)], via[(1, 1)])
+                        * direct.transpose();
+                    out += cross + cross.transpose();
+                }
+            }
+            out
         })
         .collect();
 

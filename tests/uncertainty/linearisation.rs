@@ -9,6 +9,8 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
+use fieldbal::balancing::phasor::weight_in;
+
 use super::{c, estimate, noisy, session, solve, Rotor, LAG_AGAINST, LEAD_WITH};
 
 /// Sample covariance of complex values as (Re, Im).
@@ -63,7 +65,8 @@ fn a_single_plane_correction_has_the_relative_spread_of_the_closed_form() {
 }
 
 #[test]
-fn monte_carlo_covariances_agree_with_the_linearised_ones_in_either_angle_direction() {
+fn monte_carlo_covariances_agree_with_the_linearised_ones_and_residual_bounds_hold_at_least_95_percent(
+) {
     let rotor = Rotor::two_plane(0.8);
     let exact = rotor.readings();
     for (conv, seed) in [(LAG_AGAINST, 4), (LEAD_WITH, 5)] {
@@ -73,8 +76,9 @@ fn monte_carlo_covariances_agree_with_the_linearised_ones_in_either_angle_direct
         );
         let mut rng = StdRng::seed_from_u64(seed);
         let mut cs = [Vec::new(), Vec::new()];
-        let mut rs = vec![Vec::new(); 4];
-        for _ in 0..3000 {
+        let mut held = [0usize; 4];
+        let realisations = 3000;
+        for _ in 0..realisations {
             let y: Vec<Vec<Complex64>> = exact
                 .iter()
                 .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
@@ -86,8 +90,16 @@ fn monte_carlo_covariances_agree_with_the_linearised_ones_in_either_angle_direct
             for (j, list) in cs.iter_mut().enumerate() {
                 list.push(estimate(&sol, j).0);
             }
-            for (a, list) in rs.iter_mut().enumerate() {
-                list.push(sol.predicted_residual[a].amplitude);
+            // The vibration that would really remain with this correction fitted.
+            let fitted = DVector::from_fn(2, |j, _| {
+                let corr = &sol.corrections[j];
+                weight_in(conv, corr.mass_g, corr.angle_deg)
+            });
+            let actual = &rotor.y0 + &rotor.w * fitted;
+            for (a, h) in held.iter_mut().enumerate() {
+                if actual[a].norm() <= sol.predicted_residual[a].amplitude_95.unwrap() {
+                    *h += 1;
+                }
             }
         }
         for (j, list) in cs.iter().enumerate() {
@@ -102,17 +114,13 @@ fn monte_carlo_covariances_agree_with_the_linearised_ones_in_either_angle_direct
                 "{conv:?} plane {j}: MC {mc} vs linearised {lin}"
             );
         }
-        // The residual amplitudes' 95 % quantile against the reported bound.
-        for (a, list) in rs.iter_mut().enumerate() {
-            list.sort_by(f64::total_cmp);
-            let q95 = list[(0.95 * list.len() as f64) as usize];
-            let bound = reference.predicted_residual[a].amplitude_95.unwrap();
-            eprintln!("{conv:?} row {a}: MC 95 % quantile {q95} bound {bound}");
-            assert!(
-                (q95 / bound - 1.0).abs() < 0.08,
-                "{conv:?} row {a}: MC {q95} vs {bound}"
-            );
-        }
+        // Each realisation's bound holds the really remaining vibration in at
+        // least 95 % of realisations: more here, as the fit over 4 rows takes up
+        // part of the reading noise into the prediction itself (the square case
+        // below has none of that and is calibrated).
+        let held = held.map(|h| h as f64 / realisations as f64);
+        eprintln!("{conv:?}: residual bounds hold in {held:?}");
+        assert!(held.iter().all(|&p| p >= 0.93), "{conv:?}: {held:?}");
     }
 }
 
@@ -175,14 +183,17 @@ fn the_linearised_covariance_is_the_finite_difference_jacobian_of_the_least_squa
         })
         .collect();
     let p = propagate(&t, &exact, &cov, &rows, &g, &[0, 1], &c0);
-    // Σ J Σ_r Jᵀ with J by central differences of the LS solution and of R.
+    // Σ J Σ_r Jᵀ with J by central differences of the LS solution, of the
+    // prediction R̂ = Y0 + W C, and of Y0 + W C0 with the fitted C0 held fixed.
     let h = 1e-6;
     let mut full = DMatrix::<f64>::zeros(4, 4);
     let mut res = [Matrix2::<f64>::zeros(); 4];
+    let mut fixed = [Matrix2::<f64>::zeros(); 4];
     for a in 0..4 {
         for k in 0..4 {
             let mut jc = DMatrix::<f64>::zeros(4, 2);
             let mut jr = [Matrix2::<f64>::zeros(); 4];
+            let mut jf = [Matrix2::<f64>::zeros(); 4];
             for (col, d) in [c(h, 0.0), c(0.0, h)].into_iter().enumerate() {
                 let diff = |s: f64| {
                     let mut y = exact.clone();
@@ -196,10 +207,11 @@ fn the_linearised_covariance_is_the_finite_difference_jacobian_of_the_least_squa
                             })
                             .sum::<Complex64>()
                     });
-                    let r = y.column(0) + w * &cc;
-                    (cc, r)
+                    let r = y.column(0) + &w * &cc;
+                    let f = y.column(0) + &w * &c0;
+                    (cc, r, f)
                 };
-                let ((cp, rp), (cm, rm)) = (diff(1.0), diff(-1.0));
+                let ((cp, rp, fp), (cm, rm, fm)) = (diff(1.0), diff(-1.0));
                 for j in 0..2 {
                     let dc = (cp[j] - cm[j]) / (2.0 * h);
                     jc[(2 * j, col)] = dc.re;
@@ -209,11 +221,17 @@ fn the_linearised_covariance_is_the_finite_difference_jacobian_of_the_least_squa
                     let dr = (rp[b] - rm[b]) / (2.0 * h);
                     jr[b][(0, col)] = dr.re;
                     jr[b][(1, col)] = dr.im;
+                    let df = (fp[b] - fm[b]) / (2.0 * h);
+                    jf[b][(0, col)] = df.re;
+                    jf[b][(1, col)] = df.im;
                 }
             }
             full += &jc * cov[a][k] * jc.transpose();
             for (rb, jb) in res.iter_mut().zip(&jr) {
                 *rb += jb * cov[a][k] * jb.transpose();
+            }
+            for (fb, jb) in fixed.iter_mut().zip(&jf) {
+                *fb += jb * cov[a][k] * jb.transpose();
             }
         }
     }
@@ -223,10 +241,59 @@ fn the_linearised_covariance_is_the_finite_difference_jacobian_of_the_least_squa
         p.correction_full,
         full
     );
-    for (b, (lin, fd)) in p.residual.iter().zip(&res).enumerate() {
+    for (b, (lin, fd)) in p.prediction.iter().zip(&res).enumerate() {
         assert!(
             (lin - fd).abs().max() < 1e-5 * fd.abs().max(),
-            "row {b}: {lin} vs {fd}"
+            "prediction, row {b}: {lin} vs {fd}"
         );
     }
+    for (b, (lin, fd)) in p.residual.iter().zip(&fixed).enumerate() {
+        assert!(
+            (lin - fd).abs().max() < 1e-5 * fd.abs().max(),
+            "residual with C fixed, row {b}: {lin} vs {fd}"
+        );
+    }
+}
+
+#[test]
+fn with_as_many_rows_as_planes_the_residual_bound_holds_the_remaining_vibration_in_95_percent_of_realisations(
+) {
+    // Two rows, two planes: the prediction is always 0, and all of the really
+    // remaining vibration comes from the reading errors with the correction fixed.
+    let full = Rotor::two_plane(0.8);
+    let w = full.w.rows(0, 2).into_owned();
+    let y0 = -(&w * &full.c);
+    let rotor = Rotor::with_trials(w, full.c.clone(), y0, 0.8);
+    let exact = rotor.readings();
+    let mut rng = StdRng::seed_from_u64(8);
+    let mut held = [0usize; 2];
+    let realisations = 3000;
+    for _ in 0..realisations {
+        let y: Vec<Vec<Complex64>> = exact
+            .iter()
+            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
+            .collect();
+        let sol = solve(
+            &session(LAG_AGAINST, &rotor.trial, &y, None),
+            &SolveOptions::default(),
+        );
+        let fitted = DVector::from_fn(2, |j, _| {
+            let corr = &sol.corrections[j];
+            weight_in(LAG_AGAINST, corr.mass_g, corr.angle_deg)
+        });
+        let actual = &rotor.y0 + &rotor.w * fitted;
+        for (a, h) in held.iter_mut().enumerate() {
+            assert!(sol.predicted_residual[a].amplitude < 1e-6 * y0_scale(&rotor));
+            if actual[a].norm() <= sol.predicted_residual[a].amplitude_95.unwrap() {
+                *h += 1;
+            }
+        }
+    }
+    let held = held.map(|h| h as f64 / realisations as f64);
+    eprintln!("square system: residual bounds hold in {held:?}");
+    assert!(held.iter().all(|p| (0.93..=0.97).contains(p)), "{held:?}");
+}
+
+fn y0_scale(rotor: &Rotor) -> f64 {
+    rotor.y0.iter().map(|z| z.norm()).fold(0.0, f64::max)
 }

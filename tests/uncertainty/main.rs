@@ -75,7 +75,7 @@ impl Rotor {
     }
 
     /// Trial masses whose largest relative change `|W_aj| m / |Y0_a|` is `effect`.
-    fn with_trials(
+    pub fn with_trials(
         w: DMatrix<Complex64>,
         c: DVector<Complex64>,
         y0: DVector<Complex64>,

@@ -22,8 +22,21 @@ pub struct Propagation {
     /// Joint covariance of all used planes' corrections, `2q × 2q`, ordered
     /// (Re C₀, Im C₀, Re C₁, …): the planes' errors are correlated.
     pub correction_full: DMatrix<f64>,
-    /// Per row (all rows, used or not), 2×2 covariance of (Re R, Im R).
+    /// Per row (all rows, used or not): covariance of the vibration that will
+    /// actually remain once the correction `C` is fitted, around the prediction
+    /// `R̂`. `R_true − R̂ = −(dY0 + dW C)` to first order: the errors of this
+    /// row's readings, with `C` fixed (it is what goes on the rotor); i.e. the
+    /// true vibration given the readings, as with a flat prior on the true `Y0`
+    /// and `W`. This is what `amplitude_95` bounds. Over repeated experiments it
+    /// is calibrated when rows = planes and conservative when there are more
+    /// rows (the fit takes part of the reading noise into `R̂` itself); see
+    /// tests/uncertainty. It leaves out the noise of a future check reading.
     pub residual: Vec<Matrix2<f64>>,
+    /// Per row: covariance of the prediction `R̂ = Y0 + W C` itself over
+    /// repeated experiments, through the whole chain including `dC`. For a
+    /// square problem (as many rows as planes) `R̂ ≡ 0` and this is 0, which is
+    /// why it is not the bound of the residual.
+    pub prediction: Vec<Matrix2<f64>>,
     /// Rows × planes (all planes): standard deviation `√tr Cov` (the RMS of the
     /// complex error) of each plane's trial effect `E_aj = W_aj·τ_j`, where
     /// `τ_j = max_k |T_jk|` is the plane's largest trial mass. With one trial per
@@ -185,35 +198,37 @@ pub fn propagate(
         })
         .collect();
 
-    // dR_a = W̃_a dC + λ_k δ for the readings of row a: the first part has
-    // covariance W̃ Cov(C) W̃ᵀ; the direct part and its cross terms with dC come
-    // only from row a's own readings.
-    let residual = (0..n)
+    // dR̂_a = W̃_a dC + λ_k δ for the readings of row a: the first part has
+    // covariance W̃ Cov(C) W̃ᵀ; the direct part (which alone is `residual`) and
+    // its cross terms with dC come only from row a's own readings.
+    let (residual, prediction) = (0..n)
         .map(|a| {
             let wt = DMatrix::from_fn(2, 2 * q, |row, col| {
                 let m = real_map(w[(a, used_planes[col / 2])], Complex64::from(0.0));
                 m[(row, col % 2)]
             });
             let through_c = &wt * &correction_full * wt.transpose();
-            let mut out = Matrix2::new(
+            let mut direct_cov = Matrix2::zeros();
+            let mut cross_cov = Matrix2::zeros();
+            for (k, root) in roots[a].iter().enumerate() {
+                let direct = real_map(lambda[k], Complex64::from(0.0)) * root;
+                direct_cov += direct * direct.transpose();
+                if let Some(i) = position[a] {
+                    let via = &wt * jc(i, k, root);
+                    let cross = Matrix2::new(via[(0, 0)], via[(0, 1)], via[(1, 0)], via[(1, 1)])
+                        * direct.transpose();
+                    cross_cov += cross + cross.transpose();
+                }
+            }
+            let through_c = Matrix2::new(
                 through_c[(0, 0)],
                 through_c[(0, 1)],
                 through_c[(1, 0)],
                 through_c[(1, 1)],
             );
-            for k in 0..runs {
-                let direct = real_map(lambda[k], Complex64::from(0.0)) * roots[a][k];
-                out += direct * direct.transpose();
-                if let Some(i) = position[a] {
-                    let via = &wt * jc(i, k, &roots[a][k]);
-                    let cross = Matrix2::new(via[(0, 0)], via[(0, 1)], via[(1, 0)], via[(1, 1)])
-                        * direct.transpose();
-                    out += cross + cross.transpose();
-                }
-            }
-            out
+            (direct_cov, through_c + direct_cov + cross_cov)
         })
-        .collect();
+        .unzip();
 
     // Trial effects: dW_aj = Σ_k dY_a,k T⁺_kj − dY_a0 s_j, independent terms; a
     // complex factor rotates a covariance without changing its trace.
@@ -229,6 +244,7 @@ pub fn propagate(
         correction,
         correction_full,
         residual,
+        prediction,
         effect_sd,
     }
 }

@@ -84,6 +84,7 @@ fn sample_scatter(samples: &[Complex64]) -> Matrix2<f64> {
 /// options state a single reading's repeatability and the samples measure it.
 /// From 10 samples on, the scatter carries over 80 % of the weight, so a noisy
 /// or a quiet instrument shows through; with 2 it cannot fake certainty.
+/// With both options at 0 there is no prior and the scatter is used alone.
 pub fn reading_noise(
     y: Complex64,
     samples: Option<&[Complex64]>,
@@ -92,6 +93,8 @@ pub fn reading_noise(
 ) -> Matrix2<f64> {
     let prior = reading_covariance(y, amplitude_noise_pct, phase_noise_deg);
     match samples {
+        // Options of zero noise: nothing to pool with, the scatter alone.
+        Some(s) if s.len() >= 2 && prior == Matrix2::zeros() => samples_covariance(s),
         Some(s) if s.len() >= 2 => {
             let dof = s.len() as f64 - 1.0;
             let pooled = (sample_scatter(s) * dof + prior * PRIOR_SAMPLES) / (dof + PRIOR_SAMPLES);

@@ -218,3 +218,27 @@ fn invalid_noise_options_are_rejected_naming_the_option() {
         assert_eq!(err.field.as_deref(), Some(field), "{what}");
     }
 }
+
+#[test]
+fn a_min_max_solve_says_its_intervals_are_approximate() {
+    let rotor = Rotor::two_plane(1.0);
+    let s = session(LAG_AGAINST, &rotor.trial, &rotor.readings(), None);
+    let o = SolveOptions {
+        objective: Some(fieldbal::balancing::model::Objective::MinMax),
+        ..SolveOptions::default()
+    };
+    let sol = solve(&s, &o);
+    assert!(
+        sol.warnings
+            .iter()
+            .any(|w| w.code == "uncertainty_approximate"),
+        "{:?}",
+        sol.warnings
+    );
+    assert!(sol.corrections.iter().all(|c| c.uncertainty.is_some()));
+    let ls = solve(&s, &SolveOptions::default());
+    assert!(ls
+        .warnings
+        .iter()
+        .all(|w| w.code != "uncertainty_approximate"));
+}

@@ -71,10 +71,14 @@ pub fn least_squares(
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
-    _options: &SolveOptions,
-    _session: &Session,
-    _planes: &[usize],
+    options: &SolveOptions,
+    session: &Session,
+    planes: &[usize],
 ) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
+    // Min-max and mass bounds are cone programs (method 4.1).
+    if let Some(found) = super::conic::wiring::correction(a, b, options, session, planes)? {
+        return Ok(found);
+    }
     Ok((least_squares(a, b)?, Vec::new()))
 }
 

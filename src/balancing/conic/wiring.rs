@@ -1,0 +1,91 @@
+//! Where cone solves meet a session solve: `max_mass_g` checked against the
+//! session, the choice between plain least squares and a cone program, and the
+//! `mass_limit_active` warnings.
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+use super::solve_cone;
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Objective, Session, SolveOptions};
+use crate::balancing::solution::Warning;
+use crate::balancing::solve::least_squares;
+
+/// Check `max_mass_g` against the session: every key a plane, every bound a
+/// positive finite number of grams.
+pub fn check_mass_bounds(options: &SolveOptions, session: &Session) -> Result<(), InputError> {
+    for (id, &m) in options.max_mass_g.iter().flatten() {
+        let field = format!("options.max_mass_g.{id}");
+        if !session.planes.iter().any(|p| &p.id == id) {
+            return Err(InputError::invalid(
+                "unknown_plane",
+                field,
+                format!("the session has no plane '{id}'"),
+            ));
+        }
+        if !(m.is_finite() && m > 0.0) {
+            return Err(InputError::invalid(
+                "invalid_value",
+                field,
+                "a mass bound is a finite number of grams greater than 0",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The correction when the options call for a cone program (min-max, or a mass
+/// bound on a plane being solved for), with a warning per binding bound; `None`
+/// when plain least squares is the answer. `a`, `b` are the weighted problem
+/// (3.3) on `planes` (indices into `session.planes`); the masses are grams.
+#[allow(clippy::type_complexity)]
+pub fn correction(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    options: &SolveOptions,
+    session: &Session,
+    planes: &[usize],
+) -> Result<Option<(DVector<Complex64>, Vec<Warning>)>, InputError> {
+    check_mass_bounds(options, session)?;
+    let limits = options.max_mass_g.as_ref();
+    let bounds: Vec<Option<f64>> = planes
+        .iter()
+        .map(|&j| limits.and_then(|l| l.get(&session.planes[j].id).copied()))
+        .collect();
+    let objective = options.objective.unwrap_or_default();
+    if objective == Objective::LeastSquares {
+        if bounds.iter().all(Option::is_none) {
+            return Ok(None);
+        }
+        // When the unbounded least-squares answer already keeps every bound it is
+        // optimal for the bounded problem too: keep the SVD's exact answer.
+        let x = least_squares(a, b)?;
+        let within = bounds
+            .iter()
+            .zip(x.iter())
+            .all(|(m, xj)| m.is_none_or(|m| xj.norm() <= m));
+        if within {
+            return Ok(Some((x, Vec::new())));
+        }
+    }
+    let solved = solve_cone(a, b, objective, &bounds)?;
+    let what = match objective {
+        Objective::LeastSquares => "least-squares",
+        Objective::MinMax => "min-max",
+    };
+    let warnings = planes
+        .iter()
+        .zip(&bounds)
+        .zip(&solved.bound_active)
+        .filter(|(_, &active)| active)
+        .filter_map(|((&j, m), _)| m.map(|m| (&session.planes[j].id, m)))
+        .map(|(id, m)| Warning {
+            code: "mass_limit_active".to_string(),
+            message: format!(
+                "the bound of {m} g on plane {id} is binding: the {what} correction there is held at {m} g, less than it would otherwise put there, so the predicted vibration is higher than without the bound. If the plane can take more mass (a heavier weight, or a larger radius), raising max_mass_g for {id} can lower it"
+            ),
+            plane: Some(id.clone()),
+        })
+        .collect();
+    Ok(Some((solved.x, warnings)))
+}

@@ -220,7 +220,7 @@ fn invalid_noise_options_are_rejected_naming_the_option() {
 }
 
 #[test]
-fn a_min_max_solve_says_its_intervals_are_approximate() {
+fn min_max_and_binding_mass_bounds_say_their_intervals_are_approximate() {
     let rotor = Rotor::two_plane(1.0);
     let s = session(LAG_AGAINST, &rotor.trial, &rotor.readings(), None);
     let o = SolveOptions {

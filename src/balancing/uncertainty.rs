@@ -6,6 +6,13 @@
 //! All covariances here are real 2×2 matrices of `(Re, Im)` of a complex
 //! quantity in the internal frame (method §1); `region` converts them to the
 //! session's conventions only when they leave.
+//!
+//! What the solution reports: per correction the χ²₂ 95 % ellipse of `C` and
+//! the mass and angle intervals it spans; per row `amplitude_95`, the 95 %
+//! upper bound of the vibration that will really remain with the reported
+//! correction fitted (`Propagation::residual`); per plane `trial_effect_snr`,
+//! and `trial_effect_small` below 3σ. All first order (linearised), checked
+//! by Monte Carlo in tests/uncertainty.
 
 use nalgebra::Matrix2;
 use num_complex::Complex64;

@@ -143,7 +143,7 @@ fn extreme(f: impl Fn(f64) -> f64) -> f64 {
 /// `mean` and covariance `cov` of (Re, Im).
 ///
 /// Not an approximation by a simpler distribution: the 95 % quantile of `|R|`
-/// is found by regula falsi (Illinois) on `P(|R| ≤ ρ) = 0.95` (to 2·10⁻⁵ in
+/// is found by safeguarded Newton on `P(|R| ≤ ρ) = 0.95` (to 2·10⁻⁵ in
 /// probability, a shift of the bound below 10⁻³σ), with `P` computed by
 /// one-dimensional quadrature in the principal axes
 /// (`R = μ + σ₁z₁e₁ + σ₂z₂e₂`, σ₁ ≥ σ₂):
@@ -167,62 +167,66 @@ pub fn amplitude_95(mean: Complex64, cov: &Matrix2<f64>) -> f64 {
     let mu2 = ax[1].1.x * mean.re + ax[1].1.y * mean.im;
     // The quantile lies in [|μ|, |μ| + 2.448σ₁]: the disc of radius |μ| lies in
     // a half-plane through μ (probability ½), and the disc of radius
-    // √5.991·σ₁ around μ holds the χ²₂ 95 % ellipse.
-    // Regula falsi with the Illinois modification: P is smooth and increasing in ρ.
-    let f = |rho: f64| inside(mu1, mu2, s1, s2, rho) - 0.95;
+    // √5.991·σ₁ around μ holds the χ²₂ 95 % ellipse. Newton's method on
+    // P(ρ) = 0.95 with P' from the same quadrature, kept inside the bracket by
+    // bisection; from a Gaussian first guess it takes 2 to 4 steps.
     let (mut lo, mut hi) = (m, m + CHI2_2_95.sqrt() * s1);
-    let (mut flo, mut fhi) = (f(lo), f(hi));
-    if flo >= 0.0 || fhi <= 0.0 {
-        // Only by quadrature error at the very ends.
-        return if flo >= 0.0 { lo } else { hi };
-    }
-    let mut side = 0;
-    for _ in 0..100 {
-        let x = (lo * fhi - hi * flo) / (fhi - flo);
-        let fx = f(x);
-        if fx.abs() < 2e-5 || hi - lo < 1e-9 * hi {
+    let radial = if m > 0.0 {
+        let u = Vector2::new(mean.re, mean.im) / m;
+        (u.transpose() * cov * u)[0].max(0.0).sqrt()
+    } else {
+        0.0
+    };
+    let mut x = if m > CHI2_2_95.sqrt() * s1 {
+        m + 1.645 * radial
+    } else {
+        (m * m + 3.0 * cov.trace()).sqrt()
+    };
+    for _ in 0..60 {
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
+        let [p, dp] = inside(mu1, mu2, s1, s2, x);
+        let f = p - 0.95;
+        if f.abs() < 2e-5 || hi - lo < 1e-9 * hi {
             return x;
         }
-        if fx < 0.0 {
+        if f < 0.0 {
             lo = x;
-            flo = fx;
-            if side == -1 {
-                fhi /= 2.0;
-            }
-            side = -1;
         } else {
             hi = x;
-            fhi = fx;
-            if side == 1 {
-                flo /= 2.0;
-            }
-            side = 1;
         }
+        x = if dp > 0.0 { x - f / dp } else { f64::NAN };
     }
     0.5 * (lo + hi)
 }
 
-/// `P((μ₁+σ₁z₁)² + (μ₂+σ₂z₂)² ≤ ρ²)` for independent standard normal z₁, z₂.
-fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> f64 {
+/// `P((μ₁+σ₁z₁)² + (μ₂+σ₂z₂)² ≤ ρ²)` for independent standard normal z₁, z₂,
+/// and its derivative in ρ.
+fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> [f64; 2] {
     // In `u` with μ₁+σ₁z₁ = ρ sin u, h = ρ cos u: the square-root kinks of the
-    // integrand where h → 0 become smooth ends, so Simpson converges fast.
+    // integrand where h → 0 become smooth ends, so Simpson converges fast; and
+    // the derivative's 1/h (from ∂h/∂ρ = ρ/h) cancels against dz₁ = h/σ₁ du.
+    let norm = 1.0 / std::f64::consts::TAU.sqrt();
     let inner = |u: f64| {
         let (sin, cos) = u.sin_cos();
         let z = (rho * sin - mu1) / s1;
         let h = rho * cos;
-        let p = if s2 > 0.0 {
-            normal_cdf((h - mu2) / s2) - normal_cdf((-h - mu2) / s2)
-        } else if mu2.abs() <= h {
-            1.0
+        let weight = (-0.5 * z * z).exp() * norm / s1;
+        if s2 > 0.0 {
+            let (a, b) = ((h - mu2) / s2, (-h - mu2) / s2);
+            let p = normal_cdf(a) - normal_cdf(b);
+            let dp = ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * norm / s2 * rho;
+            [p * weight * h, dp * weight]
         } else {
-            0.0
-        };
-        p * (-0.5 * z * z).exp() / (std::f64::consts::TAU).sqrt() * h / s1
+            // No spread across: P steps, P' is a point mass the bracket handles.
+            [f64::from(mu2.abs() <= h) * weight * h, 0.0]
+        }
     };
     let a = ((-rho - mu1) / s1).max(-6.0);
     let b = ((rho - mu1) / s1).min(6.0);
     if a >= b {
-        return 0.0;
+        return [0.0, 0.0];
     }
     let to_u = |z: f64| ((mu1 + s1 * z) / rho).clamp(-1.0, 1.0).asin();
     // Start from panels of at most two units of z₁: a support narrower than a
@@ -235,39 +239,53 @@ fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> f64 {
             let lo = a + step * i as f64;
             simpson(&inner, to_u(lo), to_u(lo + step), 1e-5 / panels as f64, 30)
         })
-        .sum()
+        .fold([0.0, 0.0], |acc, v| [acc[0] + v[0], acc[1] + v[1]])
 }
 
-/// Adaptive Simpson quadrature.
-fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
+type Pair = [f64; 2];
+
+fn add(x: Pair, y: Pair, k: f64) -> Pair {
+    [x[0] + k * y[0], x[1] + k * y[1]]
+}
+
+/// Simpson's rule on a pair of integrands.
+fn rule(h: f64, fa: Pair, fm: Pair, fb: Pair) -> Pair {
+    [
+        h / 6.0 * (fa[0] + 4.0 * fm[0] + fb[0]),
+        h / 6.0 * (fa[1] + 4.0 * fm[1] + fb[1]),
+    ]
+}
+
+/// Adaptive Simpson quadrature of a pair of integrands, refined on the first.
+fn simpson(f: &dyn Fn(f64) -> Pair, a: f64, b: f64, tol: f64, depth: u32) -> Pair {
     let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
-    let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
-    refine(f, a, b, fa, fm, fb, whole, tol, depth)
+    refine(f, a, b, [fa, fm, fb], rule(b - a, fa, fm, fb), tol, depth)
 }
 
-#[allow(clippy::too_many_arguments)]
 fn refine(
-    f: &dyn Fn(f64) -> f64,
+    f: &dyn Fn(f64) -> Pair,
     a: f64,
     b: f64,
-    fa: f64,
-    fm: f64,
-    fb: f64,
-    whole: f64,
+    fs: [Pair; 3],
+    whole: Pair,
     tol: f64,
     depth: u32,
-) -> f64 {
+) -> Pair {
+    let [fa, fm, fb] = fs;
     let m = 0.5 * (a + b);
-    let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
-    let (flm, frm) = (f(lm), f(rm));
-    let left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
-    let right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
-    let delta = left + right - whole;
-    if depth == 0 || delta.abs() <= 15.0 * tol {
-        return left + right + delta / 15.0;
+    let (flm, frm) = (f(0.5 * (a + m)), f(0.5 * (m + b)));
+    let left = rule(m - a, fa, flm, fm);
+    let right = rule(b - m, fm, frm, fb);
+    let sum = add(left, right, 1.0);
+    let delta = add(sum, whole, -1.0);
+    if depth == 0 || delta[0].abs() <= 15.0 * tol {
+        return add(sum, delta, 1.0 / 15.0);
     }
-    refine(f, a, m, fa, flm, fm, left, tol / 2.0, depth - 1)
-        + refine(f, m, b, fm, frm, fb, right, tol / 2.0, depth - 1)
+    add(
+        refine(f, a, m, [fa, flm, fm], left, tol / 2.0, depth - 1),
+        refine(f, m, b, [fm, frm, fb], right, tol / 2.0, depth - 1),
+        1.0,
+    )
 }
 
 /// Standard normal distribution function, through the complementary error

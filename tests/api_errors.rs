@@ -105,6 +105,8 @@ fn cases() -> Vec<Case> {
         c("solve with an invalid session", "POST", "/api/v1/solve", JSON, Body::Json(json!({"session": with_value(|s| s["runs"][1]["weights"][0]["mass_g"] = json!(-3))})), 422, "invalid_value", Some("session.runs[1].weights[0].mass_g")),
         c("stored solve with unknown option", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"bogus": 1})), 400, "unknown_field", Some("bogus")),
         c("stored solve with an unknown sensor option", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"sensors": ["DE-H", "XX"]})), 422, "unknown_sensor", Some("sensors[1]")),
+        c("stored solve with a negative mass limit", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"max_mass_g": {"inboard": -5}})), 422, "invalid_value", Some("max_mass_g.inboard")),
+        c("solve with a mass limit on an unknown plane", "POST", "/api/v1/solve", JSON, Body::Json(json!({"session": session(), "options": {"max_mass_g": {"middle": 5}}})), 422, "unknown_plane", Some("options.max_mass_g.middle")),
         c("list with limit 0", "GET", "/api/v1/sessions?limit=0", None, Body::None, 422, "out_of_range", Some("limit")),
         c("list with a word for limit", "GET", "/api/v1/sessions?limit=many", None, Body::None, 400, "invalid_query", None),
     ]

@@ -74,13 +74,15 @@ impl InputError {
 /// `field` is the path of the offending value (for an unknown field, the path of
 /// the unknown field itself, so that `phase_dg` is named).
 pub fn from_json<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
-    let de = &mut serde_json::Deserializer::from_slice(bytes);
-    let value = serde_path_to_error::deserialize(de).map_err(|err| {
+    let mut de = serde_json::Deserializer::from_slice(bytes);
+    let value = serde_path_to_error::deserialize(&mut de).map_err(|err| {
         let path = err.path().to_string();
         let inner = err.into_inner();
         let path = if path == "." { String::new() } else { path };
         classify(path, &inner)
     })?;
+    // Only whitespace may follow the value: `{...} x` is not one JSON document.
+    de.end().map_err(|err| classify(String::new(), &err))?;
     Ok(value)
 }
 
@@ -171,6 +173,13 @@ mod tests {
         let err = from_json::<Session>(body).unwrap_err();
         assert_eq!(err.code, "missing_field");
         assert_eq!(err.field.as_deref(), Some("sensors[0].unit"));
+    }
+
+    #[test]
+    fn text_after_the_json_value_is_malformed() {
+        let err = from_json::<serde_json::Value>(b"{} x").unwrap_err();
+        assert_eq!(err.code, "malformed_json");
+        assert!(from_json::<serde_json::Value>(b"{} \n").is_ok());
     }
 
     #[test]

@@ -19,6 +19,7 @@ pub mod report;
 pub mod select;
 pub mod solution;
 pub mod solve;
+pub mod uncertainty;
 pub mod validate;
 
 pub use error::{from_json, ErrorKind, InputError};

@@ -11,6 +11,7 @@ use super::model::{Session, SolveOptions};
 use super::report;
 use super::select::{select, Selection};
 use super::solution::{Solution, Warning};
+use super::uncertainty;
 use super::validate::{check, Checked};
 
 /// Everything a solve computed, in the internal frame (method §1). The report
@@ -87,6 +88,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     let checked = check(session)?;
     let w = influence_matrix(&checked)?;
     let selection = select(&checked, options)?;
+    let noise = uncertainty::noise_options(options)?;
 
     let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
     let factors = significance_factors(&a_all);
@@ -138,5 +140,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     };
     let mut solution = report::solution(&fit, options, &a);
     solution.warnings.extend(warnings);
+    // Confidence regions from reading noise (issue 6), after the method's warnings.
+    uncertainty::fill(&fit, options, noise, &mut solution);
     Ok(solution)
 }

@@ -1,18 +1,23 @@
 //! Storage of sessions, runs (with every corrected version) and solutions in SQLite.
 //!
-//! One request's writes happen in one `BEGIN IMMEDIATE` transaction: the write
-//! lock is taken up front, so concurrent writers queue on the busy timeout
-//! instead of failing on a lock upgrade, and no request stores half a session.
+//! One request's writes happen in one `BEGIN IMMEDIATE` transaction, so no
+//! request stores half a session. Writers of this process first queue on an
+//! async mutex: SQLite allows one writer at a time anyway, and its busy handler
+//! waits by sleeping (up to 100 ms a try), which under load gave long tails;
+//! the busy timeout remains for writers in other processes.
 
 pub mod runs;
 pub mod sessions;
 pub mod solutions;
 
+use std::ops::{Deref, DerefMut};
 use std::str::FromStr;
+use std::sync::Arc;
 use std::time::Duration;
 
 use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePoolOptions, SqliteSynchronous};
-use sqlx::{Sqlite, SqlitePool, Transaction};
+use sqlx::{Sqlite, SqliteConnection, SqlitePool, Transaction};
+use tokio::sync::{Mutex, OwnedMutexGuard};
 
 use crate::balancing::InputError;
 
@@ -49,11 +54,53 @@ pub async fn connect(url: &str) -> Result<SqlitePool, sqlx::Error> {
     Ok(pool)
 }
 
-/// Start a write transaction holding SQLite's write lock from the first statement.
-pub(crate) async fn begin_write(
-    pool: &SqlitePool,
-) -> Result<Transaction<'static, Sqlite>, sqlx::Error> {
-    pool.begin_with("BEGIN IMMEDIATE").await
+/// The pool and the queue of this process's writers.
+#[derive(Debug, Clone)]
+pub struct Db {
+    pub pool: SqlitePool,
+    writer: Arc<Mutex<()>>,
+}
+
+impl Db {
+    pub fn new(pool: SqlitePool) -> Self {
+        Db {
+            pool,
+            writer: Arc::new(Mutex::new(())),
+        }
+    }
+
+    /// Wait for this process's turn to write, then start a transaction holding
+    /// SQLite's write lock from the first statement.
+    pub(crate) async fn begin_write(&self) -> Result<WriteTx, sqlx::Error> {
+        let turn = self.writer.clone().lock_owned().await;
+        let tx = self.pool.begin_with("BEGIN IMMEDIATE").await?;
+        Ok(WriteTx { tx, _turn: turn })
+    }
+}
+
+/// A write transaction; the next writer's turn comes when it is committed or dropped.
+pub(crate) struct WriteTx {
+    tx: Transaction<'static, Sqlite>,
+    _turn: OwnedMutexGuard<()>,
+}
+
+impl WriteTx {
+    pub(crate) async fn commit(self) -> Result<(), sqlx::Error> {
+        self.tx.commit().await
+    }
+}
+
+impl Deref for WriteTx {
+    type Target = SqliteConnection;
+    fn deref(&self) -> &SqliteConnection {
+        &self.tx
+    }
+}
+
+impl DerefMut for WriteTx {
+    fn deref_mut(&mut self) -> &mut SqliteConnection {
+        &mut self.tx
+    }
 }
 
 /// Why a storage operation did not happen.

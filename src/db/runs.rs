@@ -2,10 +2,10 @@
 //! its earlier versions, and list those versions.
 
 use serde::Serialize;
-use sqlx::{Row, SqliteConnection, SqlitePool};
+use sqlx::{Row, SqliteConnection};
 use utoipa::ToSchema;
 
-use super::{begin_write, sessions, StoreError};
+use super::{sessions, Db, StoreError};
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
 
@@ -65,13 +65,8 @@ pub(crate) async fn current(conn: &mut SqliteConnection, seq: i64) -> Result<Vec
 
 /// Append a run to a stored session after `check` accepts the session with it.
 /// Returns the run's index in the session.
-pub async fn append(
-    pool: &SqlitePool,
-    id: &str,
-    run: &Run,
-    check: Check<'_>,
-) -> Result<usize, StoreError> {
-    let mut tx = begin_write(pool).await?;
+pub async fn append(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<usize, StoreError> {
+    let mut tx = db.begin_write().await?;
     let (seq, mut session) = sessions::load(&mut tx, id).await?;
     if session.runs.iter().any(|r| r.id == run.id) {
         return Err(StoreError::Conflict {
@@ -97,13 +92,8 @@ pub async fn append(
 }
 
 /// Replace the current version of a run by a new one, keeping the old; returns the new version number.
-pub async fn replace(
-    pool: &SqlitePool,
-    id: &str,
-    run: &Run,
-    check: Check<'_>,
-) -> Result<i64, StoreError> {
-    let mut tx = begin_write(pool).await?;
+pub async fn replace(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<i64, StoreError> {
+    let mut tx = db.begin_write().await?;
     let (seq, mut session) = sessions::load(&mut tx, id).await?;
     let index = session
         .runs
@@ -140,12 +130,8 @@ pub async fn replace(
 }
 
 /// Every version of a run, oldest first.
-pub async fn versions(
-    pool: &SqlitePool,
-    id: &str,
-    run_id: &str,
-) -> Result<Vec<RunVersion>, StoreError> {
-    let seq = sessions::seq_of(pool, id).await?;
+pub async fn versions(db: &Db, id: &str, run_id: &str) -> Result<Vec<RunVersion>, StoreError> {
+    let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT v.version, v.created_at, v.body, v.version = r.version AS current
          FROM run_versions v JOIN runs r ON r.session_seq = v.session_seq AND r.run_id = v.run_id
@@ -153,7 +139,7 @@ pub async fn versions(
     )
     .bind(seq)
     .bind(run_id)
-    .fetch_all(pool)
+    .fetch_all(&db.pool)
     .await?;
     if rows.is_empty() {
         return Err(StoreError::NotFound(format!(

@@ -1,10 +1,10 @@
 //! The `sessions` table: create, list, read back and delete whole sessions.
 
 use serde::Serialize;
-use sqlx::{Row, Sqlite, SqlitePool, Transaction};
+use sqlx::{Row, Sqlite};
 use utoipa::ToSchema;
 
-use super::{begin_write, runs, StoreError};
+use super::{runs, Db, StoreError};
 use crate::balancing::model::Session;
 
 /// One line of the session list.
@@ -31,12 +31,12 @@ pub struct SessionList {
 }
 
 /// Store a validated session under `id` with its runs, in one transaction.
-pub async fn create(pool: &SqlitePool, id: &str, session: &Session) -> Result<(), StoreError> {
+pub async fn create(db: &Db, id: &str, session: &Session) -> Result<(), StoreError> {
     let setup = Session {
         runs: Vec::new(),
         ..session.clone()
     };
-    let mut tx = begin_write(pool).await?;
+    let mut tx = db.begin_write().await?;
     let seq: i64 = sqlx::query(
         "INSERT INTO sessions (id, name, machine, setup) VALUES (?, ?, ?, ?) RETURNING seq",
     )
@@ -55,7 +55,7 @@ pub async fn create(pool: &SqlitePool, id: &str, session: &Session) -> Result<()
 }
 
 /// A page of sessions, newest first.
-pub async fn list(pool: &SqlitePool, limit: i64, offset: i64) -> Result<SessionList, StoreError> {
+pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<SessionList, StoreError> {
     let rows = sqlx::query(
         "SELECT s.id, s.name, s.machine, s.created_at,
                 (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs
@@ -63,10 +63,10 @@ pub async fn list(pool: &SqlitePool, limit: i64, offset: i64) -> Result<SessionL
     )
     .bind(limit)
     .bind(offset)
-    .fetch_all(pool)
+    .fetch_all(&db.pool)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM sessions")
-        .fetch_one(pool)
+        .fetch_one(&db.pool)
         .await?
         .get(0);
     let sessions = rows
@@ -101,8 +101,8 @@ where
 }
 
 /// The session as it would be posted again: its set-up and the current version of each run.
-pub async fn get(pool: &SqlitePool, id: &str) -> Result<Session, StoreError> {
-    let mut conn = pool.acquire().await?;
+pub async fn get(db: &Db, id: &str) -> Result<Session, StoreError> {
+    let mut conn = db.pool.acquire().await?;
     Ok(load(&mut conn, id).await?.1)
 }
 
@@ -123,8 +123,8 @@ pub(crate) async fn load(
 }
 
 /// Delete a session with its runs and solutions.
-pub async fn delete(pool: &SqlitePool, id: &str) -> Result<(), StoreError> {
-    let mut tx: Transaction<'_, Sqlite> = begin_write(pool).await?;
+pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
+    let mut tx = db.begin_write().await?;
     let done = sqlx::query("DELETE FROM sessions WHERE id = ?")
         .bind(id)
         .execute(&mut *tx)

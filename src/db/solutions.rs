@@ -2,12 +2,12 @@
 //! run versions it used and the fieldbal version that computed it.
 
 use serde::{Deserialize, Serialize};
-use sqlx::{Row, SqlitePool};
+use sqlx::Row;
 use utoipa::ToSchema;
 
-use super::{begin_write, sessions, StoreError};
+use super::{sessions, Db, StoreError};
 use crate::balancing::model::{Session, SolveOptions};
-use crate::balancing::{InputError, Solution};
+use crate::balancing::Solution;
 
 /// A run and the version of it that a solution used.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
@@ -31,17 +31,16 @@ pub struct StoredSolution {
     pub solution: serde_json::Value,
 }
 
-/// Solve the stored session with `solve` and store the solution; nothing is
-/// stored when `solve` rejects the session or the options.
-pub async fn solve_and_store(
-    pool: &SqlitePool,
-    id: &str,
-    options: &SolveOptions,
-    solve: impl FnOnce(&Session) -> Result<Solution, InputError>,
-) -> Result<StoredSolution, StoreError> {
-    // Read the session and its run versions from one snapshot; solve outside
-    // the write lock, and record exactly which versions were used.
-    let mut read = pool.begin().await?;
+/// Which stored session, and which versions of its runs, a solve used.
+pub struct Solved {
+    seq: i64,
+    pub runs: Vec<UsedRun>,
+}
+
+/// Read the session and its run versions from one snapshot, so the solution
+/// records exactly which versions it used.
+pub async fn load_for_solve(db: &Db, id: &str) -> Result<(Session, Solved), StoreError> {
+    let mut read = db.pool.begin().await?;
     let (seq, session) = sessions::load(&mut read, id).await?;
     let runs: Vec<UsedRun> =
         sqlx::query("SELECT run_id, version FROM runs WHERE session_seq = ? ORDER BY position")
@@ -55,10 +54,20 @@ pub async fn solve_and_store(
             })
             .collect();
     read.commit().await?;
+    Ok((session, Solved { seq, runs }))
+}
 
-    let solution = serde_json::to_value(solve(&session).map_err(StoreError::Invalid)?)?;
+/// Store a solution of a session loaded by [`load_for_solve`].
+pub async fn store(
+    db: &Db,
+    id: &str,
+    solved: Solved,
+    options: &SolveOptions,
+    solution: &Solution,
+) -> Result<StoredSolution, StoreError> {
+    let solution = serde_json::to_value(solution)?;
     let fieldbal_version = env!("CARGO_PKG_VERSION").to_string();
-    let mut tx = begin_write(pool).await?;
+    let mut tx = db.begin_write().await?;
     // The session may have been deleted meanwhile: then nothing is inserted.
     let row = sqlx::query(
         "INSERT INTO solutions (session_seq, options, run_versions, solution, fieldbal_version)
@@ -66,10 +75,10 @@ pub async fn solve_and_store(
          RETURNING seq, created_at",
     )
     .bind(serde_json::to_string(options)?)
-    .bind(serde_json::to_string(&runs)?)
+    .bind(serde_json::to_string(&solved.runs)?)
     .bind(serde_json::to_string(&solution)?)
     .bind(&fieldbal_version)
-    .bind(seq)
+    .bind(solved.seq)
     .fetch_optional(&mut *tx)
     .await?
     .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))?;
@@ -79,20 +88,20 @@ pub async fn solve_and_store(
         created_at: row.get("created_at"),
         fieldbal_version,
         options: options.clone(),
-        runs,
+        runs: solved.runs,
         solution,
     })
 }
 
 /// Every stored solution of a session, oldest first.
-pub async fn list(pool: &SqlitePool, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
-    let seq = sessions::seq_of(pool, id).await?;
+pub async fn list(db: &Db, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
+    let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
          FROM solutions WHERE session_seq = ? ORDER BY seq",
     )
     .bind(seq)
-    .fetch_all(pool)
+    .fetch_all(&db.pool)
     .await?;
     rows.iter()
         .map(|r| {

@@ -55,12 +55,15 @@ pub struct Config {
 pub struct AppState {
     pub pool: SqlitePool,
     pub config: Arc<Config>,
+    /// The pool with this process's queue of writers (see `db`).
+    pub(crate) db: crate::db::Db,
 }
 
 impl AppState {
     /// State with the default settings.
     pub fn new(pool: SqlitePool) -> Self {
         AppState {
+            db: crate::db::Db::new(pool.clone()),
             pool,
             config: Arc::new(Config {
                 body_limit_bytes: DEFAULT_BODY_LIMIT,
@@ -114,8 +117,14 @@ pub fn app(state: AppState) -> Router {
         .fallback(not_found)
         .method_not_allowed_fallback(method_not_allowed)
         .layer(DefaultBodyLimit::max(limit))
-        .layer(CatchPanicLayer::custom(|_panic| {
-            axum::response::IntoResponse::into_response(ApiError::internal(&"handler panicked"))
+        .layer(CatchPanicLayer::custom(|panic: Box<dyn std::any::Any + Send>| {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            let cause = format!("handler panicked: {what}");
+            axum::response::IntoResponse::into_response(ApiError::internal(&cause))
         }))
         .layer(PropagateRequestIdLayer::x_request_id())
         .layer(
@@ -193,7 +202,11 @@ async fn shutdown_signal() {
 
 /// Run the service until SIGTERM or Ctrl-C.
 pub fn serve_main(args: ServeArgs) -> ExitCode {
+    // Logs go to standard error (journald and container runtimes collect it),
+    // coloured only on a terminal.
     tracing_subscriber::fmt()
+        .with_writer(std::io::stderr)
+        .with_ansi(std::io::IsTerminal::is_terminal(&std::io::stderr()))
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "info".into()),
         )

@@ -71,7 +71,7 @@ pub async fn append(
     Path(id): Path<String>,
     JsonBody(run): JsonBody<Run>,
 ) -> Result<impl IntoResponse, ApiError> {
-    db::runs::append(&state.pool, &id, &run, &check_with_run).await?;
+    db::runs::append(&state.db, &id, &run, &check_with_run).await?;
     let location = format!(
         "/api/v1/sessions/{}/runs/{}",
         encode_segment(&id),
@@ -115,7 +115,7 @@ pub async fn replace(
         )
         .into());
     }
-    let version = db::runs::replace(&state.pool, &id, &run, &check_with_run).await?;
+    let version = db::runs::replace(&state.db, &id, &run, &check_with_run).await?;
     Ok(Json(RunStored { run_id, version }))
 }
 
@@ -130,7 +130,7 @@ pub async fn versions(
     State(state): State<AppState>,
     Path((id, run_id)): Path<(String, String)>,
 ) -> Result<Json<Vec<RunVersion>>, ApiError> {
-    Ok(Json(db::runs::versions(&state.pool, &id, &run_id).await?))
+    Ok(Json(db::runs::versions(&state.db, &id, &run_id).await?))
 }
 
 #[cfg(test)]

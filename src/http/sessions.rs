@@ -59,7 +59,7 @@ pub async fn create(
 ) -> Result<impl IntoResponse, ApiError> {
     validate_stored(&session)?;
     let id = uuid::Uuid::new_v4().to_string();
-    db::sessions::create(&state.pool, &id, &session).await?;
+    db::sessions::create(&state.db, &id, &session).await?;
     let location = format!("/api/v1/sessions/{id}");
     Ok((
         StatusCode::CREATED,
@@ -91,7 +91,7 @@ pub async fn list(
             InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
         );
     }
-    Ok(Json(db::sessions::list(&state.pool, limit, offset).await?))
+    Ok(Json(db::sessions::list(&state.db, limit, offset).await?))
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}", tag = "sessions",
@@ -104,7 +104,7 @@ pub async fn get(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<Session>, ApiError> {
-    Ok(Json(db::sessions::get(&state.pool, &id).await?))
+    Ok(Json(db::sessions::get(&state.db, &id).await?))
 }
 
 #[utoipa::path(delete, path = "/api/v1/sessions/{id}", tag = "sessions",
@@ -117,6 +117,6 @@ pub async fn delete(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<StatusCode, ApiError> {
-    db::sessions::delete(&state.pool, &id).await?;
+    db::sessions::delete(&state.db, &id).await?;
     Ok(StatusCode::NO_CONTENT)
 }

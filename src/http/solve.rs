@@ -33,11 +33,16 @@ fn within_options(mut e: InputError) -> InputError {
 
 /// Run the solver off the async workers: a large session or a min-max problem
 /// must not stall other requests. A panic in the solver becomes a 500.
-async fn solve_blocking(session: Session, options: SolveOptions) -> Result<Solution, ApiError> {
+/// `name_field` puts the error's field path in terms of the posted body.
+async fn solve_blocking(
+    session: Session,
+    options: SolveOptions,
+    name_field: fn(InputError) -> InputError,
+) -> Result<Solution, ApiError> {
     tokio::task::spawn_blocking(move || balancing::solve(&session, &options))
         .await
         .map_err(|e| ApiError::internal(&e))?
-        .map_err(|e| within_solve_request(e).into())
+        .map_err(|e| name_field(e).into())
 }
 
 #[utoipa::path(post, path = "/api/v1/solve", tag = "solve",
@@ -51,7 +56,9 @@ async fn solve_blocking(session: Session, options: SolveOptions) -> Result<Solut
     ))]
 pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solution>, ApiError> {
     balancing::validate_session(&req.session).map_err(|e| e.under("session"))?;
-    Ok(Json(solve_blocking(req.session, req.options).await?))
+    Ok(Json(
+        solve_blocking(req.session, req.options, within_solve_request).await?,
+    ))
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
@@ -70,10 +77,9 @@ pub async fn create_solution(
     Path(id): Path<String>,
     OptionsBody(options): OptionsBody,
 ) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
-    let stored = db::solutions::solve_and_store(&state.pool, &id, &options, |session| {
-        balancing::solve(session, &options).map_err(within_options)
-    })
-    .await?;
+    let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
+    let solution = solve_blocking(session, options.clone(), within_options).await?;
+    let stored = db::solutions::store(&state.db, &id, solved, &options, &solution).await?;
     Ok((StatusCode::CREATED, Json(stored)))
 }
 
@@ -87,7 +93,7 @@ pub async fn list_solutions(
     State(state): State<AppState>,
     Path(id): Path<String>,
 ) -> Result<Json<Vec<StoredSolution>>, ApiError> {
-    Ok(Json(db::solutions::list(&state.pool, &id).await?))
+    Ok(Json(db::solutions::list(&state.db, &id).await?))
 }
 
 #[cfg(test)]

@@ -1,0 +1,196 @@
+//! The uncertainty step of a solve: checks the noise options, builds each
+//! reading's covariance, propagates it, and fills the solution's `uncertainty`,
+//! `amplitude_95`, `trial_effect_snr` and the noise side of `trial_effect_small`.
+
+use nalgebra::Matrix2;
+use num_complex::Complex64;
+
+use super::{
+    amplitude_95, correction_uncertainty, propagate, reading_noise, DEFAULT_AMPLITUDE_NOISE_PCT,
+    DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
+};
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Objective, SolveOptions};
+use crate::balancing::phasor::reading_in;
+use crate::balancing::solution::{Solution, Warning};
+use crate::balancing::solve::Fit;
+
+/// A trial effect below this many standard deviations of its noise at every
+/// used row cannot be told from noise (the complex error exceeds 3σ with
+/// probability about e⁻⁹ ≈ 10⁻⁴ when isotropic).
+pub const SNR_THRESHOLD: f64 = 3.0;
+
+/// The 1X repeatability the solve assumes where a reading has no samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Noise {
+    pub amplitude_pct: f64,
+    pub phase_deg: f64,
+}
+
+fn check(
+    field: &str,
+    value: Option<f64>,
+    default: f64,
+    max: f64,
+    unit: &str,
+) -> Result<f64, InputError> {
+    let x = value.unwrap_or(default);
+    if !x.is_finite() || !(0.0..=max).contains(&x) {
+        return Err(InputError::invalid(
+            "invalid_value",
+            field,
+            format!("the 1X repeatability must be a finite number from 0 to {max} {unit}, got {x}"),
+        ));
+    }
+    Ok(x)
+}
+
+/// `amplitude_noise_pct` and `phase_noise_deg` with their defaults (2 %, 2°),
+/// or a 422 naming the option.
+pub fn noise_options(options: &SolveOptions) -> Result<Noise, InputError> {
+    Ok(Noise {
+        amplitude_pct: check(
+            "options.amplitude_noise_pct",
+            options.amplitude_noise_pct,
+            DEFAULT_AMPLITUDE_NOISE_PCT,
+            MAX_AMPLITUDE_NOISE_PCT,
+            "%",
+        )?,
+        phase_deg: check(
+            "options.phase_noise_deg",
+            options.phase_noise_deg,
+            DEFAULT_PHASE_NOISE_DEG,
+            MAX_PHASE_NOISE_DEG,
+            "degrees",
+        )?,
+    })
+}
+
+/// Covariance of every reading, `[row][run]`, internal frame.
+fn reading_covariances(fit: &Fit, noise: Noise) -> Vec<Vec<Matrix2<f64>>> {
+    let checked = &fit.checked;
+    let conv = checked.conventions;
+    (0..checked.rows.len())
+        .map(|a| {
+            (0..checked.runs.len())
+                .map(|k| {
+                    let samples: Option<Vec<Complex64>> =
+                        checked.reading(a, k).samples.as_ref().map(|s| {
+                            s.iter()
+                                .map(|x| reading_in(conv, x.amplitude, x.phase_deg))
+                                .collect()
+                        });
+                    reading_noise(
+                        checked.y[(a, k)],
+                        samples.as_deref(),
+                        noise.amplitude_pct,
+                        noise.phase_deg,
+                    )
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Fill the solution's uncertainty fields from reading noise.
+///
+/// Min-max objective and binding mass bounds: the propagation differentiates
+/// the least-squares solution (`propagate`), evaluated at the reported
+/// correction. That is the sensitivity of a least-squares fit to the same rows,
+/// not of the min-max or bounded solution itself (whose derivative depends on
+/// which rows or bounds are active, and jumps when they change); a binding bound
+/// in truth narrows the mass interval. The solution then carries the warning
+/// `uncertainty_approximate` saying so.
+pub fn fill(fit: &Fit, options: &SolveOptions, noise: Noise, solution: &mut Solution) {
+    let checked = &fit.checked;
+    let conv = checked.conventions;
+    let cov = reading_covariances(fit, noise);
+    let sel = &fit.selection;
+    let prop = propagate(
+        &checked.t,
+        &checked.y,
+        &cov,
+        &sel.rows,
+        &sel.weights,
+        &fit.planes,
+        &fit.c,
+    );
+
+    for ((corr, &c), cc) in solution
+        .corrections
+        .iter_mut()
+        .zip(fit.c.iter())
+        .zip(&prop.correction)
+    {
+        corr.uncertainty = Some(correction_uncertainty(c, cc, conv));
+    }
+    for ((res, &r), rc) in solution
+        .predicted_residual
+        .iter_mut()
+        .zip(fit.residual.iter())
+        .zip(&prop.residual)
+    {
+        res.amplitude_95 = Some(amplitude_95(r, rc));
+    }
+
+    for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {
+        let tau = checked
+            .t
+            .row(j)
+            .iter()
+            .map(|x| x.norm())
+            .fold(0.0, f64::max);
+        // Largest effect-to-noise ratio over the used rows; none where there is no noise.
+        let snr = sel
+            .rows
+            .iter()
+            .filter(|&&a| prop.effect_sd[(a, j)] > 0.0)
+            .map(|&a| fit.w[(a, j)].norm() * tau / prop.effect_sd[(a, j)])
+            .reduce(f64::max);
+        diag.trial_effect_snr = snr;
+        let Some(snr) = snr.filter(|&s| s < SNR_THRESHOLD) else {
+            continue;
+        };
+        let id = diag.plane.clone();
+        let more = if snr > 0.0 {
+            format!(" (about {:.1} times the mass)", SNR_THRESHOLD / snr)
+        } else {
+            String::new()
+        };
+        let text = format!(
+            "the trial weight in plane {id} changed the vibration by at most {snr:.1} times the measurement noise of that change (from the readings' repeatability: amplitude_noise_pct, phase_noise_deg, or the samples' scatter); below {SNR_THRESHOLD} times it cannot be told from noise at any sensor and speed, so the influence coefficients and the correction for this plane are unreliable: repeat the trial run with a heavier trial weight{more}, or at a larger radius"
+        );
+        let existing = solution
+            .warnings
+            .iter_mut()
+            .find(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(id.as_str()));
+        match existing {
+            Some(w) => w.message = format!("{}. Also, {text}", w.message.trim_end_matches('.')),
+            None => solution.warnings.push(Warning {
+                code: "trial_effect_small".into(),
+                message: text,
+                plane: Some(id),
+            }),
+        }
+    }
+
+    let min_max = options.objective == Some(Objective::MinMax);
+    let bound = solution
+        .warnings
+        .iter()
+        .any(|w| w.code == "mass_limit_active");
+    if min_max || bound {
+        let why = if min_max {
+            "the min-max objective"
+        } else {
+            "a binding mass bound"
+        };
+        solution.warnings.push(Warning {
+            code: "uncertainty_approximate".into(),
+            message: format!(
+                "with {why} the confidence intervals are those of a least-squares fit to the same readings, evaluated at this correction: indicative of the scatter to expect, not exact for this solution"
+            ),
+            plane: None,
+        });
+    }
+}

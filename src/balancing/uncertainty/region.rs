@@ -1,0 +1,309 @@
+//! The contract's 95 % figures from a 2×2 covariance: the confidence region of
+//! a correction with its mass and angle intervals, and the upper bound of a
+//! residual amplitude; conversion to the session's angle convention.
+
+use nalgebra::{Matrix2, SymmetricEigen, Vector2};
+use num_complex::Complex64;
+
+use crate::balancing::model::{AngleDirection, Conventions};
+use crate::balancing::phasor::{weight_out, wrap_deg};
+use crate::balancing::solution::Uncertainty;
+
+/// 95 % quantile of χ² with 2 degrees of freedom, `−2 ln 0.05`.
+pub const CHI2_2_95: f64 = 5.991_464_547_107_979;
+/// Samples of the ellipse boundary before refining an extreme of mass or angle.
+const COARSE_POINTS: usize = 24;
+
+/// Eigen-decomposition of a covariance, variances clipped at 0, larger first.
+fn axes(cov: &Matrix2<f64>) -> [(f64, Vector2<f64>); 2] {
+    let sym = (cov + cov.transpose()) / 2.0;
+    let e = SymmetricEigen::new(sym);
+    let mut ax = [0, 1].map(|i| {
+        (
+            e.eigenvalues[i].max(0.0),
+            e.eigenvectors.column(i).into_owned(),
+        )
+    });
+    if ax[0].0 < ax[1].0 {
+        ax.swap(0, 1);
+    }
+    ax
+}
+
+/// The 95 % confidence region of a correction `c` (internal frame, grams) with
+/// covariance `cov` of (Re c, Im c), in the session's conventions.
+///
+/// Region: the χ²₂ ellipse `{z : (z − c)ᵀ Σ⁻¹ (z − c) ≤ 5.991}`, which holds the
+/// true correction with probability 95 % when the error is Gaussian (first order).
+/// The intervals are its projections: the mass interval is `[min |z|, max |z|]`
+/// and the angle interval the range of `arg z` over the ellipse (found on its
+/// boundary, where these extremes lie). Both therefore hold at least 95 %
+/// (they are simultaneous, slightly wider than one-at-a-time intervals). When
+/// the ellipse contains the origin the angle is undetermined: mass from 0,
+/// angle `[0, 360]`.
+///
+/// The angle interval is in the session's `angle_direction`, lower end in
+/// `[0, 360)`, upper end = lower + width (so it may exceed 360). The covariance
+/// is reported with the imaginary axis at +90° in that direction: against
+/// rotation flips the imaginary axis, which flips the sign of the off-diagonal.
+pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Conventions) -> Uncertainty {
+    let k = CHI2_2_95.sqrt();
+    let ax = axes(cov);
+    // Mahalanobis distance of the origin; a zero variance along a direction in
+    // which the origin differs makes it infinitely far.
+    let d2: f64 = ax
+        .iter()
+        .map(|(lam, v)| {
+            let p = v.x * c.re + v.y * c.im;
+            if *lam > 0.0 {
+                p * p / lam
+            } else if p.abs() > 0.0 {
+                f64::INFINITY
+            } else {
+                0.0
+            }
+        })
+        .sum();
+    let (mass, theta) = weight_out(conv, c);
+    let point = boundary(c, &ax, k);
+    let (mass_g, angle_deg) = if d2 <= CHI2_2_95 {
+        ([0.0, extreme(|t| point(t).norm())], [0.0, 360.0])
+    } else if ax[0].0 == 0.0 {
+        ([mass, mass], [theta, theta])
+    } else {
+        // Angle offset from c's own angle, internal frame (with rotation):
+        // smooth on the boundary, within ±90° as the origin is outside.
+        let offset = |t: f64| (point(t) * c.conj()).arg();
+        let lo = -extreme(|t| -point(t).norm());
+        let hi = extreme(|t| point(t).norm());
+        let (dlo, dhi) = (-extreme(|t| -offset(t)), extreme(offset));
+        let (a, b) = match conv.angle_direction {
+            AngleDirection::WithRotation => (dlo, dhi),
+            AngleDirection::AgainstRotation => (-dhi, -dlo),
+        };
+        let lower = wrap_deg(theta + a.to_degrees());
+        ([lo, hi], [lower, lower + (b - a).to_degrees()])
+    };
+    let off = match conv.angle_direction {
+        AngleDirection::WithRotation => cov[(0, 1)],
+        AngleDirection::AgainstRotation => -cov[(0, 1)],
+    };
+    Uncertainty {
+        mass_g,
+        angle_deg,
+        covariance_g2: [[cov[(0, 0)], off], [off, cov[(1, 1)]]],
+    }
+}
+
+/// The point `c + k·L·(cos t, sin t)` of the ellipse boundary, `L Lᵀ = Σ`.
+fn boundary(c: Complex64, ax: &[(f64, Vector2<f64>); 2], k: f64) -> impl Fn(f64) -> Complex64 {
+    let (l1, l2) = (ax[0].0.sqrt() * k, ax[1].0.sqrt() * k);
+    let (v1, v2) = (ax[0].1, ax[1].1);
+    move |t| {
+        let (s, co) = t.sin_cos();
+        let v = v1 * (l1 * co) + v2 * (l2 * s);
+        c + Complex64::new(v.x, v.y)
+    }
+}
+
+/// Maximum of a smooth periodic `f(t)` over `[0, 2π)`: the best of
+/// [`COARSE_POINTS`] samples, refined by golden-section search between its
+/// neighbours (the functions here have at most two local maxima).
+fn extreme(f: impl Fn(f64) -> f64) -> f64 {
+    let step = std::f64::consts::TAU / COARSE_POINTS as f64;
+    let (best, fbest) = (0..COARSE_POINTS)
+        .map(|i| (i as f64 * step, f(i as f64 * step)))
+        .fold(
+            (0.0, f64::NEG_INFINITY),
+            |b, x| if x.1 > b.1 { x } else { b },
+        );
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (best - step, best + step);
+    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    // 30 steps shrink the 2-sample bracket (30°) below 1e-6 rad.
+    for _ in 0..30 {
+        if f1 < f2 {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+        } else {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+        }
+    }
+    fbest.max(f1).max(f2)
+}
+
+/// The 95 % upper bound of the amplitude `|R|` when `R` is Gaussian with mean
+/// `mean` and covariance `cov` of (Re, Im).
+///
+/// Not an approximation by a simpler distribution: the 95 % quantile of `|R|`
+/// is found by safeguarded Newton on `P(|R| ≤ ρ) = 0.95` (to 2·10⁻⁴ in
+/// probability, a shift of the bound of about 2·10⁻³σ: ample for a 95 % bound), with `P` computed by
+/// one-dimensional quadrature in the principal axes
+/// (`R = μ + σ₁z₁e₁ + σ₂z₂e₂`, σ₁ ≥ σ₂):
+/// `P = ∫ φ(z₁) [Φ((h−μ₂)/σ₂) − Φ((−h−μ₂)/σ₂)] dz₁`, `h = √(ρ² − (μ₁+σ₁z₁)²)`,
+/// over `z₁ ∈ [−6, 6]` (less where `|μ₁+σ₁z₁| > ρ`; beyond ±6 lies 2·10⁻⁹),
+/// substituted so that the square-root kinks where `h → 0` are smooth, by
+/// adaptive Simpson on panels of two units (tolerance 10⁻⁴; steps when σ₂ is
+/// tiny are resolved by the adaptivity). Φ is within 1.2·10⁻⁷ (see
+/// [`normal_cdf`]). The one approximation is the first-order (Gaussian) error
+/// model itself. A test compares the bound with a Monte Carlo of the Gaussian.
+/// For `μ = 0` and isotropic σ this is the Rayleigh quantile `σ√5.991`; for
+/// `|μ| ≫ σ` it tends to `|μ| + 1.645 σ_radial`.
+pub fn amplitude_95(mean: Complex64, cov: &Matrix2<f64>) -> f64 {
+    let ax = axes(cov);
+    let (s1, s2) = (ax[0].0.sqrt(), ax[1].0.sqrt());
+    let m = mean.norm();
+    if s1.is_nan() || s1 <= 1e-12 * m || !s1.is_finite() {
+        return m;
+    }
+    let mu1 = ax[0].1.x * mean.re + ax[0].1.y * mean.im;
+    let mu2 = ax[1].1.x * mean.re + ax[1].1.y * mean.im;
+    // The quantile lies in [|μ|, |μ| + 2.448σ₁]: the disc of radius |μ| lies in
+    // a half-plane through μ (probability ½), and the disc of radius
+    // √5.991·σ₁ around μ holds the χ²₂ 95 % ellipse. Newton's method on
+    // P(ρ) = 0.95 with P' from the same quadrature, kept inside the bracket by
+    // bisection; from a Gaussian first guess it takes 2 to 4 steps.
+    let (mut lo, mut hi) = (m, m + CHI2_2_95.sqrt() * s1);
+    let radial = if m > 0.0 {
+        let u = Vector2::new(mean.re, mean.im) / m;
+        (u.transpose() * cov * u)[0].max(0.0).sqrt()
+    } else {
+        0.0
+    };
+    let mut x = if m > CHI2_2_95.sqrt() * s1 {
+        m + 1.645 * radial
+    } else {
+        (m * m + 3.0 * cov.trace()).sqrt()
+    };
+    for _ in 0..60 {
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
+        let [p, dp] = inside(mu1, mu2, s1, s2, x);
+        let f = p - 0.95;
+        if f.abs() < 2e-4 || hi - lo < 1e-9 * hi {
+            return x;
+        }
+        if f < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        x = if dp > 0.0 { x - f / dp } else { f64::NAN };
+    }
+    0.5 * (lo + hi)
+}
+
+/// `P((μ₁+σ₁z₁)² + (μ₂+σ₂z₂)² ≤ ρ²)` for independent standard normal z₁, z₂,
+/// and its derivative in ρ.
+fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> [f64; 2] {
+    // In `u` with μ₁+σ₁z₁ = ρ sin u, h = ρ cos u: the square-root kinks of the
+    // integrand where h → 0 become smooth ends, so Simpson converges fast; and
+    // the derivative's 1/h (from ∂h/∂ρ = ρ/h) cancels against dz₁ = h/σ₁ du.
+    let norm = 1.0 / std::f64::consts::TAU.sqrt();
+    let inner = |u: f64| {
+        let (sin, cos) = u.sin_cos();
+        let z = (rho * sin - mu1) / s1;
+        let h = rho * cos;
+        let weight = (-0.5 * z * z).exp() * norm / s1;
+        if s2 > 0.0 {
+            let (a, b) = ((h - mu2) / s2, (-h - mu2) / s2);
+            let p = normal_cdf(a) - normal_cdf(b);
+            let dp = ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * norm / s2 * rho;
+            [p * weight * h, dp * weight]
+        } else {
+            // No spread across: P steps, P' is a point mass the bracket handles.
+            [f64::from(mu2.abs() <= h) * weight * h, 0.0]
+        }
+    };
+    let a = ((-rho - mu1) / s1).max(-6.0);
+    let b = ((rho - mu1) / s1).min(6.0);
+    if a >= b {
+        return [0.0, 0.0];
+    }
+    let to_u = |z: f64| ((mu1 + s1 * z) / rho).clamp(-1.0, 1.0).asin();
+    // Start from panels of at most two units of z₁: a support narrower than a
+    // panel, which all the panel's nodes could miss, holds under 0.69 of the
+    // probability, so missing it cannot decide whether P reaches 0.95.
+    let panels = ((0.5 * (b - a)).ceil() as usize).max(1);
+    let step = (b - a) / panels as f64;
+    (0..panels)
+        .map(|i| {
+            let lo = a + step * i as f64;
+            simpson(&inner, to_u(lo), to_u(lo + step), 1e-4 / panels as f64, 30)
+        })
+        .fold([0.0, 0.0], |acc, v| [acc[0] + v[0], acc[1] + v[1]])
+}
+
+type Pair = [f64; 2];
+
+fn add(x: Pair, y: Pair, k: f64) -> Pair {
+    [x[0] + k * y[0], x[1] + k * y[1]]
+}
+
+/// Simpson's rule on a pair of integrands.
+fn rule(h: f64, fa: Pair, fm: Pair, fb: Pair) -> Pair {
+    [
+        h / 6.0 * (fa[0] + 4.0 * fm[0] + fb[0]),
+        h / 6.0 * (fa[1] + 4.0 * fm[1] + fb[1]),
+    ]
+}
+
+/// Adaptive Simpson quadrature of a pair of integrands, refined on the first.
+fn simpson(f: &dyn Fn(f64) -> Pair, a: f64, b: f64, tol: f64, depth: u32) -> Pair {
+    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
+    refine(f, a, b, [fa, fm, fb], rule(b - a, fa, fm, fb), tol, depth)
+}
+
+fn refine(
+    f: &dyn Fn(f64) -> Pair,
+    a: f64,
+    b: f64,
+    fs: [Pair; 3],
+    whole: Pair,
+    tol: f64,
+    depth: u32,
+) -> Pair {
+    let [fa, fm, fb] = fs;
+    let m = 0.5 * (a + b);
+    let (flm, frm) = (f(0.5 * (a + m)), f(0.5 * (m + b)));
+    let left = rule(m - a, fa, flm, fm);
+    let right = rule(b - m, fm, frm, fb);
+    let sum = add(left, right, 1.0);
+    let delta = add(sum, whole, -1.0);
+    if depth == 0 || delta[0].abs() <= 15.0 * tol {
+        return add(sum, delta, 1.0 / 15.0);
+    }
+    add(
+        refine(f, a, m, [fa, flm, fm], left, tol / 2.0, depth - 1),
+        refine(f, m, b, [fm, frm, fb], right, tol / 2.0, depth - 1),
+        1.0,
+    )
+}
+
+/// Standard normal distribution function, through the complementary error
+/// function of Numerical Recipes (`erfcc`, Chebyshev fit, fractional error
+/// below 1.2·10⁻⁷ everywhere).
+pub fn normal_cdf(x: f64) -> f64 {
+    let z = -x / std::f64::consts::SQRT_2;
+    let a = z.abs();
+    let t = 1.0 / (1.0 + 0.5 * a);
+    let poly = -a * a - 1.265_512_23
+        + t * (1.000_023_68
+            + t * (0.374_091_96
+                + t * (0.096_784_18
+                    + t * (-0.186_288_06
+                        + t * (0.278_868_07
+                            + t * (-1.135_203_98
+                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
+    let erfc = t * poly.exp();
+    0.5 * if z >= 0.0 { erfc } else { 2.0 - erfc }
+}

@@ -1,0 +1,90 @@
+//! Service behaviour around the API: request ids, a configured body limit,
+//! content-type parameters, and racing appends of one run.
+
+mod common;
+
+use common::{example, post, send, start_server, start_server_with};
+use serde_json::json;
+
+#[tokio::test]
+async fn a_request_id_is_generated_or_echoed() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    let client = reqwest::Client::new();
+    let res = client.get(server.url("/healthz")).send().await.unwrap();
+    let generated = res.headers()["x-request-id"].to_str().unwrap().to_string();
+    assert_eq!(generated.len(), 36, "a uuid: {generated}");
+    let res = client
+        .get(server.url("/api/v1/sessions/none"))
+        .header("x-request-id", "stand-42")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(res.status(), 404);
+    assert_eq!(res.headers()["x-request-id"], "stand-42");
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn the_body_limit_is_configurable_and_answered_with_413_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server_with(&dir.path().join("t.db"), 1024).await;
+    let client = reqwest::Client::new();
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    assert!(session.to_string().len() > 1024);
+    let (status, _, body) = post(&client, &server.url("/api/v1/sessions"), &session).await;
+    assert_eq!(
+        (status, body["error"]["code"].as_str()),
+        (413, Some("body_too_large"))
+    );
+    let mut small = session.clone();
+    small["runs"] = json!([]);
+    let (status, _, body) = post(&client, &server.url("/api/v1/sessions"), &small).await;
+    assert_eq!(status, 201, "{body}");
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn json_with_a_charset_parameter_is_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    let client = reqwest::Client::new();
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    let req = client
+        .post(server.url("/api/v1/sessions"))
+        .header("content-type", "application/json; charset=utf-8")
+        .body(session.to_string());
+    let (status, _, body) = send(req).await;
+    assert_eq!(status, 201, "{body}");
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn of_ten_racing_appends_of_one_run_exactly_one_is_stored() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    let client = reqwest::Client::new();
+    let mut session = example("pump-two-plane-exact.json")["session"].clone();
+    let run = session["runs"].as_array_mut().unwrap().pop().unwrap();
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
+    let base = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());
+    let tasks: Vec<_> = (0..10)
+        .map(|_| {
+            let (client, url, run) = (
+                client.clone(),
+                server.url(&format!("{base}/runs")),
+                run.clone(),
+            );
+            tokio::spawn(async move { post(&client, &url, &run).await.0 })
+        })
+        .collect();
+    let mut statuses = Vec::new();
+    for task in tasks {
+        statuses.push(task.await.unwrap());
+    }
+    statuses.sort_unstable();
+    assert_eq!(statuses, [201, 409, 409, 409, 409, 409, 409, 409, 409, 409]);
+    let (_, _, back) = send(client.get(server.url(&base))).await;
+    assert_eq!(back["runs"].as_array().unwrap().len(), 3);
+    server.shutdown().await;
+}

@@ -38,6 +38,52 @@ async fn solve_and_compare(b: &Browser, expected: &Value) {
     }
 }
 
+/// The page's "mass ± g, angle ± °" and 95 % bounds, against the service's own solve of the session.
+async fn uncertainty_as_the_service_gives_it(b: &Browser, stand: &Stand, session: &Value) {
+    let solution: Value = reqwest::Client::new()
+        .post(stand.server.url("/api/v1/solve"))
+        .json(&json!({ "session": session }))
+        .send()
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    let c = &solution["corrections"][0];
+    let u = &c["uncertainty"];
+    let (m, a) = (
+        c["mass_g"].as_f64().unwrap(),
+        c["angle_deg"].as_f64().unwrap(),
+    );
+    let dm = (u["mass_g"][1].as_f64().unwrap() - m).max(m - u["mass_g"][0].as_f64().unwrap());
+    let arc = |x: f64, y: f64| {
+        let d = (x - y).rem_euclid(360.0);
+        d.min(360.0 - d)
+    };
+    let da = arc(u["angle_deg"][1].as_f64().unwrap(), a)
+        .max(arc(a, u["angle_deg"][0].as_f64().unwrap()));
+    // One decimal is the page's rounding for values from 1 to 100.
+    assert!(
+        (1.0..100.0).contains(&dm) && (1.0..100.0).contains(&da),
+        "{u}"
+    );
+    let want = format!(
+        "{m:.1} g ± {dm:.1} g, {:.1}° ± {da:.1}°",
+        a.rem_euclid(360.0)
+    );
+    let shown = b
+        .text("#step-solve tr[data-plane=\"inboard\"] .corr-uncertainty")
+        .await;
+    assert_eq!(shown, want);
+    let bound = solution["predicted_residual"][0]["amplitude_95"]
+        .as_f64()
+        .unwrap();
+    assert_eq!(
+        b.text("#step-solve table.residual td.after95").await,
+        format!("≤ {bound:.1}")
+    );
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
     let stand = Stand::start().await;
@@ -74,6 +120,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
     b.screenshot("runs-768").await;
     b.viewport(1280, 800).await;
     solve_and_compare(b, &expected).await;
+    uncertainty_as_the_service_gives_it(b, &stand, &session).await;
     b.screenshot("solution-1280").await;
     b.client
         .execute("document.querySelector('.plots').scrollIntoView()", vec![])

@@ -19,11 +19,16 @@ const ADVICE = {
 
 /** "52 g ± 4 g, 141° ± 5°": the 95 % intervals as a half-width around the value. */
 export function uncertaintyText(c) {
+  return uncertaintyParts(c).join(", ");
+}
+
+/** The mass part and the angle part of `uncertaintyText`. */
+function uncertaintyParts(c) {
   const u = c.uncertainty;
-  if (!u) return "";
+  if (!u) return [];
   const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
   const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
-  return `${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g, ${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`;
+  return [`${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g`, `${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`];
 }
 
 function angleWords(conventions) {
@@ -38,7 +43,7 @@ export function correctionsTable(solution) {
       h("th", { class: "corr-plane" }, c.plane),
       h("td", { class: "corr-mass" }, `${fmt(c.mass_g, 1)} g`),
       h("td", { class: "corr-angle" }, fmtAngle(c.angle_deg)),
-      h("td", { class: "corr-uncertainty" }, c.uncertainty ? uncertaintyText(c) : "–"),
+      h("td", { class: "corr-uncertainty" }, c.uncertainty ? uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]) : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
       h("td", { class: "corr-split" }, c.split ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
     ))),

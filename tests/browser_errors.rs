@@ -263,3 +263,38 @@ async fn typed_numbers_are_accepted_or_refused_as_the_table_says() {
     }
     stand.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn changing_the_sensors_keeps_each_typed_cell_with_its_sensor() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (session, _) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    type_into(b, &field("runs[0].readings[1].amplitude"), "185.4").await;
+    type_into(b, &field("runs[0].readings[1].phase_deg"), "159").await;
+
+    // Taking DE-H out moves DE-V's row up: the typed values must move with it.
+    b.click("nav [data-step=\"setup\"]").await;
+    b.click("button[aria-label=\"Remove sensor 1\"]").await;
+    b.click("button.add-sensor").await;
+    type_into(b, &field("sensors[3].id"), "AX").await;
+    b.click("#step-setup button.next").await;
+    assert_eq!(
+        form::value_of(b, &field("runs[0].readings[0].amplitude")).await,
+        "185.4"
+    );
+    assert_eq!(
+        form::value_of(b, &field("runs[0].readings[0].phase_deg")).await,
+        "159"
+    );
+    assert_eq!(
+        form::value_of(b, &field("runs[0].readings[1].amplitude")).await,
+        ""
+    );
+    assert_eq!(
+        form::value_of(b, &field("runs[0].readings[3].amplitude")).await,
+        ""
+    );
+    stand.stop().await;
+}

@@ -39,6 +39,7 @@ export function newDraft(kind = "trial", weights = null) {
     check: kind === "check" && !isZero,
     weights: ownWeights.map((w) => ({ ...w })),
     carry: false,
+    rows: rows(),
     cells: rows().map(() => ({ amplitude: null, phase_deg: null })),
   };
 }
@@ -52,6 +53,7 @@ function editDraft(index) {
     zero: run.weights.length === 0,
     weights: run.weights.map((w) => ({ ...w })),
     carry: false,
+    rows: rows(),
     cells: rows().map((row) => {
       const r = readingFor(run, row);
       // Repeated samples stay with a reading whose mean is not retyped.
@@ -176,9 +178,22 @@ function grid(rerender) {
   ));
 }
 
+const rowKey = (row) => `${row.speed}|${row.sensor}`;
+
+/** Keep typed cells with their speed and sensor when the set-up changed the rows. */
+function reshapeDraft(d) {
+  const now = rows();
+  const before = d.rows || now;
+  if (before.map(rowKey).join("\n") === now.map(rowKey).join("\n") && d.cells.length === now.length) return;
+  const old = new Map(before.map((row, i) => [rowKey(row), d.cells[i]]));
+  d.cells = now.map((row) => old.get(rowKey(row)) || { amplitude: null, phase_deg: null });
+  d.rows = now;
+}
+
 /** Render the runs step into `root`; `solve` goes on to step 3. */
 export function renderRuns(root, solve) {
   if (state.draft === undefined || (state.draft === null && !referenceRun())) newDraft();
+  if (state.draft) reshapeDraft(state.draft);
   const rerender = () => renderRuns(root, solve);
   const d = state.draft;
   const trials = state.runs.filter((r) => r.stored && r.weights.length > 0).length;

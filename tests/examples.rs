@@ -4,7 +4,10 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use fieldbal::balancing::{self, phasor::angle_diff_deg, Solution};
+mod common;
+
+use common::assert_matches_expected;
+use fieldbal::balancing::{self, Solution};
 use serde_json::Value;
 
 fn examples_dir() -> PathBuf {
@@ -31,37 +34,6 @@ fn balancing_examples() -> Vec<(String, Value)> {
         out.len()
     );
     out
-}
-
-fn assert_matches_expected(name: &str, solution: &Value, expected: &Value) {
-    let tol = &expected["tolerance"];
-    let (mass_rel, angle_deg) = (
-        tol["mass_rel"].as_f64().unwrap(),
-        tol["angle_deg"].as_f64().unwrap(),
-    );
-    let want = expected["corrections"].as_array().unwrap();
-    let got = solution["corrections"].as_array().unwrap();
-    assert_eq!(got.len(), want.len(), "{name}: number of corrections");
-    for w in want {
-        let plane = w["plane"].as_str().unwrap();
-        let g = got
-            .iter()
-            .find(|c| c["plane"] == plane)
-            .unwrap_or_else(|| panic!("{name}: no correction for {plane}"));
-        let (gm, wm) = (g["mass_g"].as_f64().unwrap(), w["mass_g"].as_f64().unwrap());
-        let (ga, wa) = (
-            g["angle_deg"].as_f64().unwrap(),
-            w["angle_deg"].as_f64().unwrap(),
-        );
-        assert!(
-            (gm - wm).abs() <= mass_rel * wm,
-            "{name} {plane}: mass {gm} vs {wm}"
-        );
-        assert!(
-            angle_diff_deg(ga, wa) <= angle_deg,
-            "{name} {plane}: angle {ga} vs {wa}"
-        );
-    }
 }
 
 #[test]

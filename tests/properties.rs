@@ -3,8 +3,7 @@
 //! condition of least squares.
 
 use fieldbal::balancing::model::{
-    AngleDirection, Conventions, PhaseConvention, Plane, Reading, Run, Sensor, Session,
-    SolveOptions, Unit, Weight,
+    Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight,
 };
 use fieldbal::balancing::phasor::{reading_in, reading_out, weight_in, weight_out};
 use fieldbal::balancing::{solve, Solution};
@@ -63,21 +62,6 @@ fn rotor(exact: bool) -> impl Strategy<Value = Rotor> {
                     }),
                 ),
             })
-    })
-}
-
-fn conventions() -> [Conventions; 4] {
-    use AngleDirection::*;
-    use PhaseConvention::*;
-    [
-        (Lag, AgainstRotation),
-        (Lag, WithRotation),
-        (Lead, AgainstRotation),
-        (Lead, WithRotation),
-    ]
-    .map(|(phase, angle_direction)| Conventions {
-        phase,
-        angle_direction,
     })
 }
 
@@ -165,7 +149,7 @@ proptest! {
 
     #[test]
     fn noise_free_readings_give_back_the_exact_correction(r in rotor(true), k in 0usize..4) {
-        let conv = conventions()[k];
+        let conv = Conventions::ALL[k];
         let s = solve(&session(&r, conv, false), &SolveOptions::default()).unwrap();
         // Skip nearly singular rotors: their exact answer is not numerically recoverable.
         prop_assume!(s.condition_number < 1e6);
@@ -176,7 +160,7 @@ proptest! {
 
     #[test]
     fn the_four_conventions_give_the_same_physical_correction(r in rotor(false)) {
-        let answers: Vec<Vec<Complex64>> = conventions()
+        let answers: Vec<Vec<Complex64>> = Conventions::ALL
             .iter()
             .map(|&conv| internal_corrections(&solve(&session(&r, conv, false), &SolveOptions::default()).unwrap()))
             .collect();
@@ -189,7 +173,7 @@ proptest! {
 
     #[test]
     fn kept_and_removed_trials_give_the_same_influence_coefficients(r in rotor(false), k in 0usize..4) {
-        let conv = conventions()[k];
+        let conv = Conventions::ALL[k];
         let removed = solve(&session(&r, conv, false), &SolveOptions::default()).unwrap();
         let kept = solve(&session(&r, conv, true), &SolveOptions::default()).unwrap();
         for (a, b) in removed.influence_coefficients.iter().zip(&kept.influence_coefficients) {
@@ -200,7 +184,7 @@ proptest! {
 
     #[test]
     fn the_least_squares_residual_is_orthogonal_to_the_influence_columns(r in rotor(false), k in 0usize..4) {
-        let conv = conventions()[k];
+        let conv = Conventions::ALL[k];
         let s = solve(&session(&r, conv, false), &SolveOptions::default()).unwrap();
         let rows = s.predicted_residual.len();
         let planes = r.w.ncols();

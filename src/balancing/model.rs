@@ -40,6 +40,28 @@ pub struct Conventions {
     pub angle_direction: AngleDirection,
 }
 
+impl Conventions {
+    /// The four combinations a user can choose; each must give the same physical correction.
+    pub const ALL: [Conventions; 4] = [
+        Conventions {
+            phase: PhaseConvention::Lag,
+            angle_direction: AngleDirection::AgainstRotation,
+        },
+        Conventions {
+            phase: PhaseConvention::Lag,
+            angle_direction: AngleDirection::WithRotation,
+        },
+        Conventions {
+            phase: PhaseConvention::Lead,
+            angle_direction: AngleDirection::AgainstRotation,
+        },
+        Conventions {
+            phase: PhaseConvention::Lead,
+            angle_direction: AngleDirection::WithRotation,
+        },
+    ];
+}
+
 /// Rotor data for the ISO 21940-11 tolerance (method §5.2).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]

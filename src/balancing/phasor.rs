@@ -77,24 +77,9 @@ pub fn angle_diff_deg(a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
 
-    fn all_conventions() -> [Conventions; 4] {
-        use AngleDirection::*;
-        use PhaseConvention::*;
-        [
-            (Lag, AgainstRotation),
-            (Lag, WithRotation),
-            (Lead, AgainstRotation),
-            (Lead, WithRotation),
-        ]
-        .map(|(phase, angle_direction)| Conventions {
-            phase,
-            angle_direction,
-        })
-    }
-
     #[test]
     fn readings_and_weights_round_trip_in_every_convention() {
-        for conv in all_conventions() {
+        for conv in Conventions::ALL {
             for deg in [0.0, 12.5, 90.0, 181.0, 359.9] {
                 let (a, p) = reading_out(conv, reading_in(conv, 3.5, deg));
                 assert!(

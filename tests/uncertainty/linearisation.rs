@@ -11,7 +11,7 @@ use rand_distr::{Distribution, Normal};
 
 use fieldbal::balancing::phasor::weight_in;
 
-use super::{c, estimate, noisy, session, solve, Rotor, LAG_AGAINST, LEAD_WITH};
+use super::{c, estimate, session, solve, solve_noisy, Rotor, LAG_AGAINST, LEAD_WITH};
 
 /// Sample covariance of complex values as (Re, Im).
 fn scatter(z: &[Complex64]) -> Matrix2<f64> {
@@ -79,14 +79,7 @@ fn monte_carlo_covariances_agree_with_the_linearised_ones_and_residual_bounds_ho
         let mut held = [0usize; 4];
         let realisations = 3000;
         for _ in 0..realisations {
-            let y: Vec<Vec<Complex64>> = exact
-                .iter()
-                .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-                .collect();
-            let sol = solve(
-                &session(conv, &rotor.trial, &y, None),
-                &SolveOptions::default(),
-            );
+            let sol = solve_noisy(&rotor, &exact, conv, &mut rng);
             for (j, list) in cs.iter_mut().enumerate() {
                 list.push(estimate(&sol, j).0);
             }
@@ -269,14 +262,7 @@ fn with_as_many_rows_as_planes_the_residual_bound_holds_the_remaining_vibration_
     let mut held = [0usize; 2];
     let realisations = 3000;
     for _ in 0..realisations {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
-        let sol = solve(
-            &session(LAG_AGAINST, &rotor.trial, &y, None),
-            &SolveOptions::default(),
-        );
+        let sol = solve_noisy(&rotor, &exact, LAG_AGAINST, &mut rng);
         let fitted = DVector::from_fn(2, |j, _| {
             let corr = &sol.corrections[j];
             weight_in(LAG_AGAINST, corr.mass_g, corr.angle_deg)

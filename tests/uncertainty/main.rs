@@ -112,6 +112,24 @@ impl Rotor {
     }
 }
 
+/// Solve one realisation of `exact` (runs × rows) read with the default
+/// noise model (2 %, 2°) in conventions `conv`.
+pub fn solve_noisy(
+    rotor: &Rotor,
+    exact: &[Vec<Complex64>],
+    conv: Conventions,
+    rng: &mut StdRng,
+) -> Solution {
+    let y: Vec<Vec<Complex64>> = exact
+        .iter()
+        .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, rng)).collect())
+        .collect();
+    solve(
+        &session(conv, &rotor.trial, &y, None),
+        &SolveOptions::default(),
+    )
+}
+
 /// A session of these readings (runs × rows); `samples[k][a]` optionally lists repeated readings.
 pub fn session(
     conv: Conventions,
@@ -211,14 +229,7 @@ pub fn coverage(rotor: &Rotor, conv: Conventions, realisations: usize, seed: u64
     let exact = rotor.readings();
     let mut hits = vec![0usize; rotor.trial.len()];
     for _ in 0..realisations {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
-        let sol = solve(
-            &session(conv, &rotor.trial, &y, None),
-            &SolveOptions::default(),
-        );
+        let sol = solve_noisy(rotor, &exact, conv, &mut rng);
         for (j, hit) in hits.iter_mut().enumerate() {
             let (z, cov) = estimate(&sol, j);
             let d = z - rotor.correction(conv, j);

@@ -1,10 +1,13 @@
 //! Service behaviour around the API: request ids, a configured body limit,
-//! content-type parameters, and racing appends of one run.
+//! content-type parameters, a stalled client's time limit, and racing appends of one run.
 
 mod common;
 
-use common::{example, post, send, start_server, start_server_with};
+use std::time::Duration;
+
+use common::{example, post, send, start_server, start_server_configured, start_server_with};
 use serde_json::json;
+use tokio::io::{AsyncReadExt, AsyncWriteExt};
 
 #[tokio::test]
 async fn a_request_id_is_generated_or_echoed() {
@@ -86,5 +89,31 @@ async fn of_ten_racing_appends_of_one_run_exactly_one_is_stored() {
     assert_eq!(statuses, [201, 409, 409, 409, 409, 409, 409, 409, 409, 409]);
     let (_, _, back) = send(client.get(server.url(&base))).await;
     assert_eq!(back["runs"].as_array().unwrap().len(), 3);
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn a_client_that_stalls_mid_body_gets_a_json_408_and_nothing_is_stored() {
+    let dir = tempfile::tempdir().unwrap();
+    let (addr, server) = start_server_configured(&dir.path().join("t.db"), |s| {
+        s.with_request_timeout(Duration::from_millis(300))
+    })
+    .await;
+    let mut stream = tokio::net::TcpStream::connect(addr).await.unwrap();
+    let head = format!(
+        "POST /api/v1/sessions HTTP/1.1\r\nhost: {addr}\r\ncontent-type: application/json\r\ncontent-length: 1000\r\n\r\n{{\"name\": "
+    );
+    stream.write_all(head.as_bytes()).await.unwrap();
+    let mut answer = Vec::new();
+    tokio::time::timeout(Duration::from_secs(10), stream.read_to_end(&mut answer))
+        .await
+        .expect("the server answers within its time limit")
+        .unwrap();
+    let answer = String::from_utf8_lossy(&answer);
+    assert!(answer.starts_with("HTTP/1.1 408"), "{answer}");
+    assert!(answer.contains("\"code\":\"request_timeout\""), "{answer}");
+    let client = reqwest::Client::new();
+    let (status, _, list) = send(client.get(server.url("/api/v1/sessions"))).await;
+    assert_eq!((status, &list["total"]), (200, &json!(0)), "{list}");
     server.shutdown().await;
 }

@@ -14,6 +14,7 @@ pub mod solve;
 use std::future::Future;
 use std::process::ExitCode;
 use std::sync::Arc;
+use std::time::Duration;
 
 use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{Request, StatusCode};
@@ -29,6 +30,8 @@ use error::ApiError;
 
 /// Default request body limit: 4 MiB.
 pub const DEFAULT_BODY_LIMIT: usize = 4 * 1024 * 1024;
+/// Default time a request may take, body included, seconds.
+pub const DEFAULT_REQUEST_TIMEOUT_SECS: u64 = 30;
 
 /// `fieldbal serve` arguments.
 #[derive(Debug, Clone, clap::Args)]
@@ -42,12 +45,16 @@ pub struct ServeArgs {
     /// Largest accepted request body, bytes.
     #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = DEFAULT_BODY_LIMIT)]
     pub body_limit_bytes: usize,
+    /// Longest time a request may take, body included, seconds (then 408).
+    #[arg(long, env = "FIELDBAL_REQUEST_TIMEOUT_SECS", default_value_t = DEFAULT_REQUEST_TIMEOUT_SECS)]
+    pub request_timeout_secs: u64,
 }
 
 /// Settings the handlers need.
 #[derive(Debug, Clone)]
 pub struct Config {
     pub body_limit_bytes: usize,
+    pub request_timeout: Duration,
 }
 
 /// Shared state of the handlers.
@@ -67,15 +74,20 @@ impl AppState {
             pool,
             config: Arc::new(Config {
                 body_limit_bytes: DEFAULT_BODY_LIMIT,
+                request_timeout: Duration::from_secs(DEFAULT_REQUEST_TIMEOUT_SECS),
             }),
         }
     }
 
     /// The same state with another body limit.
     pub fn with_body_limit(mut self, bytes: usize) -> Self {
-        self.config = Arc::new(Config {
-            body_limit_bytes: bytes,
-        });
+        Arc::make_mut(&mut self.config).body_limit_bytes = bytes;
+        self
+    }
+
+    /// The same state with another request time limit.
+    pub fn with_request_timeout(mut self, timeout: Duration) -> Self {
+        Arc::make_mut(&mut self.config).request_timeout = timeout;
         self
     }
 }
@@ -88,6 +100,7 @@ pub async fn connect_db(url: &str) -> Result<SqlitePool, sqlx::Error> {
 /// The whole service: API, OpenAPI document, web form, JSON 404/405, request ids and logs.
 pub fn app(state: AppState) -> Router {
     let limit = state.config.body_limit_bytes;
+    let timeout = state.config.request_timeout;
     let api = Router::new()
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
@@ -117,6 +130,7 @@ pub fn app(state: AppState) -> Router {
         .fallback(not_found)
         .method_not_allowed_fallback(method_not_allowed)
         .layer(DefaultBodyLimit::max(limit))
+        .layer(axum::middleware::from_fn_with_state(timeout, time_limit))
         .layer(CatchPanicLayer::custom(|panic: Box<dyn std::any::Any + Send>| {
             let what = panic
                 .downcast_ref::<&str>()
@@ -163,6 +177,27 @@ async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value
         .await
         .map_err(|e| ApiError::internal(&e))?;
     Ok(Json(serde_json::json!({ "status": "ok" })))
+}
+
+/// Answer 408 with the contract's body when a request (a slow body, say) takes
+/// longer than the limit, so a stalled client holds no connection or shutdown
+/// forever. A store cut short is rolled back with its transaction.
+async fn time_limit(
+    State(limit): State<Duration>,
+    req: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> axum::response::Response {
+    match tokio::time::timeout(limit, next.run(req)).await {
+        Ok(response) => response,
+        Err(_) => axum::response::IntoResponse::into_response(ApiError::new(
+            StatusCode::REQUEST_TIMEOUT,
+            "request_timeout",
+            format!(
+                "the request took longer than {} s; nothing was stored",
+                limit.as_secs_f64()
+            ),
+        )),
+    }
 }
 
 async fn not_found() -> ApiError {
@@ -236,7 +271,9 @@ async fn run(args: ServeArgs) -> Result<(), String> {
         .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(%addr, database = %args.database, "fieldbal serve listening");
-    let state = AppState::new(pool.clone()).with_body_limit(args.body_limit_bytes);
+    let state = AppState::new(pool.clone())
+        .with_body_limit(args.body_limit_bytes)
+        .with_request_timeout(Duration::from_secs(args.request_timeout_secs));
     serve(listener, state, shutdown_signal())
         .await
         .map_err(|e| e.to_string())?;

@@ -48,6 +48,14 @@ pub async fn start_server(db_path: &Path) -> (SocketAddr, Server) {
 
 /// As [`start_server`], with another request body limit.
 pub async fn start_server_with(db_path: &Path, body_limit: usize) -> (SocketAddr, Server) {
+    start_server_configured(db_path, |s| s.with_body_limit(body_limit)).await
+}
+
+/// As [`start_server`], with the state's settings changed by `configure`.
+pub async fn start_server_configured(
+    db_path: &Path,
+    configure: impl FnOnce(AppState) -> AppState,
+) -> (SocketAddr, Server) {
     let pool = http::connect_db(db_path.to_str().expect("utf-8 path"))
         .await
         .expect("database opens");
@@ -56,7 +64,7 @@ pub async fn start_server_with(db_path: &Path, body_limit: usize) -> (SocketAddr
         .expect("bind 127.0.0.1:0");
     let addr = listener.local_addr().expect("local addr");
     let (stop, stopped) = oneshot::channel::<()>();
-    let state = AppState::new(pool.clone()).with_body_limit(body_limit);
+    let state = configure(AppState::new(pool.clone()));
     let task = tokio::spawn(async move {
         let served = http::serve(listener, state, async {
             let _ = stopped.await;

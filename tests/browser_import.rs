@@ -114,9 +114,10 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
                       uncertainty: { mass_g: [48.3, 56.5], angle_deg: [136.2, 145.8],
                                      covariance_g2: [[4.1, 0.3], [0.3, 3.2]] } };
           const wrap = { plane: 'A', mass_g: 10, angle_deg: 359, uncertainty: { mass_g: [9, 11.5], angle_deg: [355, 363] } };
+          const lost = { plane: 'A', mass_g: 1486, angle_deg: 119.2, uncertainty: { mass_g: [0, 10304], angle_deg: [0, 360] } };
           const table = m.residualTable({ predicted_residual: [
             { speed_rpm: 1480, sensor: '1H', unit: 'um_pp', amplitude_before: 88, amplitude: 4.1, phase_deg: 213, amplitude_95: 7.9, used: true } ] });
-          done([m.uncertaintyText(c), m.uncertaintyText(wrap), table.querySelector('td.after95').textContent]);
+          done([m.uncertaintyText(c), m.uncertaintyText(wrap), m.uncertaintyText(lost), table.querySelector('td.after95').textContent]);
         });
     "#;
     let got = b
@@ -129,6 +130,7 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
         json!([
             "52.4 g ± 4.1 g, 141.0° ± 4.8°",
             "10.0 g ± 1.5 g, 359.0° ± 4.0°",
+            "1486 g (0 to 10304 g), angle undetermined",
             "≤ 7.9"
         ])
     );

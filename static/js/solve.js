@@ -26,6 +26,11 @@ export function uncertaintyText(c) {
 function uncertaintyParts(c) {
   const u = c.uncertainty;
   if (!u) return [];
+  // A 95 % region around zero (the service gives the angle as [0, 360]): the
+  // noise could account for the whole correction, so no angle can be trusted.
+  if (u.angle_deg[1] - u.angle_deg[0] >= 359.999) {
+    return [`${fmt(c.mass_g, 1)} g (0 to ${fmt(u.mass_g[1], 1)} g)`, "angle undetermined"];
+  }
   const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
   const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
   return [`${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g`, `${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`];

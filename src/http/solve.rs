@@ -55,7 +55,8 @@ async fn solve_blocking(
         (status = 422, description = "Invalid or unsolvable session or options", body = ErrorBody),
     ))]
 pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solution>, ApiError> {
-    balancing::validate_session(&req.session).map_err(|e| e.under("session"))?;
+    // `balancing::solve` validates the session first; `within_solve_request`
+    // puts its field paths under `session.`.
     Ok(Json(
         solve_blocking(req.session, req.options, within_solve_request).await?,
     ))

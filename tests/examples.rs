@@ -1,4 +1,4 @@
-//! Every public example in ../shared/examples solved by the library and by
+//! Every public example (copies of ../shared/examples in tests/data/examples) solved by the library and by
 //! `fieldbal solve`, compared with its expected answer and tolerance.
 
 use std::path::PathBuf;
@@ -11,13 +11,13 @@ use fieldbal::balancing::{self, Solution};
 use serde_json::Value;
 
 fn examples_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/examples")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/examples")
 }
 
 /// The example files that carry an expected balancing answer.
 fn balancing_examples() -> Vec<(String, Value)> {
     let mut out = Vec::new();
-    for entry in std::fs::read_dir(examples_dir()).expect("../shared/examples exists") {
+    for entry in std::fs::read_dir(examples_dir()).expect("tests/data/examples exists") {
         let path = entry.unwrap().path();
         let value: Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
         if value.get("expected").is_some() {

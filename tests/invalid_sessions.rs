@@ -7,7 +7,7 @@ use serde_json::{json, Value};
 fn base() -> Value {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../shared/examples/pump-two-plane-exact.json"
+        "/tests/data/examples/pump-two-plane-exact.json"
     );
     let example: Value = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
     example["session"].clone()

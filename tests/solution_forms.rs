@@ -9,7 +9,7 @@ use num_complex::Complex64;
 use serde_json::{json, Value};
 
 fn example(name: &str) -> Value {
-    let path = format!("{}/../shared/examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/tests/data/examples/{name}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_slice::<Value>(&std::fs::read(path).unwrap()).unwrap()["session"].clone()
 }
 

@@ -8,7 +8,7 @@ use fieldbal::balancing::identify::{estimate_case, Case};
 use serde_json::Value;
 
 fn file() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/examples/textbook-regression.json")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/examples/textbook-regression.json")
 }
 
 /// The published estimate's two values, in the file's order (c first, then damping).

@@ -82,9 +82,9 @@ pub async fn start_server_configured(
     (addr, server)
 }
 
-/// An example file from `../shared/examples`, parsed.
+/// An example file from `tests/data/examples` (copies of `../shared/examples`), parsed.
 pub fn example(name: &str) -> serde_json::Value {
-    let path = format!("{}/../shared/examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/tests/data/examples/{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
 }

@@ -8,7 +8,7 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 use serde_json::{json, Value};
 
 pub fn example(name: &str) -> (Session, SolveOptions) {
-    let path = format!("{}/../shared/examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/tests/data/examples/{name}", env!("CARGO_MANIFEST_DIR"));
     balancing::parse_session_file(&std::fs::read(path).unwrap()).unwrap()
 }
 

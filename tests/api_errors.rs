@@ -214,7 +214,9 @@ async fn a_stored_session_that_cannot_be_solved_yet_gets_422_and_no_solution_is_
         "/api/v1/sessions/{}/solutions",
         created["id"].as_str().unwrap()
     ));
-    let (status, _, body) = send(client.post(&url)).await;
+    // An empty body means the default options; writes must say JSON (issue #9).
+    let (status, _, body) =
+        send(client.post(&url).header("content-type", "application/json")).await;
     assert_eq!(status, 422, "{body}");
     assert!(body["error"]["code"].is_string());
     let (_, _, solutions) = send(client.get(&url)).await;

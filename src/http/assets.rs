@@ -44,6 +44,7 @@ static ASSETS: &[Asset] = &[
     asset!("js/setup.js", JS),
     asset!("js/solve.js", JS),
     asset!("js/state.js", JS),
+    asset!("js/token.js", JS),
 ];
 
 /// Scripts and styles from this origin only: even if user text ever reached

@@ -69,7 +69,7 @@ async fn read<S: Send + Sync>(req: Request, state: &S) -> Result<(HeaderMap, Byt
 }
 
 /// Accept `application/json` (with parameters such as `charset`) and `application/*+json`.
-fn check_content_type(headers: &HeaderMap) -> Result<(), ApiError> {
+pub(crate) fn check_content_type(headers: &HeaderMap) -> Result<(), ApiError> {
     let value = headers
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())

@@ -4,6 +4,7 @@
 //! [`serve`] on a bound listener with a shutdown future.
 
 pub mod assets;
+pub mod edge;
 pub mod error;
 pub mod extract;
 pub mod openapi;
@@ -48,6 +49,8 @@ pub struct ServeArgs {
     /// Longest time a request may take, body included, seconds (then 408).
     #[arg(long, env = "FIELDBAL_REQUEST_TIMEOUT_SECS", default_value_t = DEFAULT_REQUEST_TIMEOUT_SECS)]
     pub request_timeout_secs: u64,
+    #[command(flatten)]
+    pub edge: edge::EdgeArgs,
 }
 
 /// Settings the handlers need.
@@ -64,6 +67,8 @@ pub struct AppState {
     pub config: Arc<Config>,
     /// The pool with this process's queue of writers (see `db`).
     pub(crate) db: crate::db::Db,
+    /// Tokens, allowed hosts, connection limits (see `edge`).
+    pub edge: Arc<edge::EdgeConfig>,
 }
 
 impl AppState {
@@ -76,7 +81,14 @@ impl AppState {
                 body_limit_bytes: DEFAULT_BODY_LIMIT,
                 request_timeout: Duration::from_secs(DEFAULT_REQUEST_TIMEOUT_SECS),
             }),
+            edge: Arc::new(edge::EdgeConfig::default()),
         }
+    }
+
+    /// The same state with other edge settings (tokens, hosts, connections).
+    pub fn with_edge(mut self, edge: edge::EdgeConfig) -> Self {
+        self.edge = Arc::new(edge);
+        self
     }
 
     /// The same state with another body limit.
@@ -101,6 +113,10 @@ pub async fn connect_db(url: &str) -> Result<SqlitePool, sqlx::Error> {
 pub fn app(state: AppState) -> Router {
     let limit = state.config.body_limit_bytes;
     let timeout = state.config.request_timeout;
+    let guard = edge::Guard {
+        edge: state.edge.clone(),
+        body_limit: limit,
+    };
     let api = Router::new()
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
@@ -140,6 +156,7 @@ pub fn app(state: AppState) -> Router {
             let cause = format!("handler panicked: {what}");
             axum::response::IntoResponse::into_response(ApiError::internal(&cause))
         }))
+        .layer(axum::middleware::from_fn_with_state(guard, edge::guard))
         .layer(PropagateRequestIdLayer::x_request_id())
         .layer(
             TraceLayer::new_for_http()
@@ -157,15 +174,14 @@ pub fn app(state: AppState) -> Router {
 }
 
 /// Serve `app(state)` on `listener` until `shutdown` completes, then finish the
-/// requests in flight.
+/// requests in flight (within the edge's grace period).
 pub async fn serve(
     listener: tokio::net::TcpListener,
     state: AppState,
     shutdown: impl Future<Output = ()> + Send + 'static,
 ) -> std::io::Result<()> {
-    axum::serve(listener, app(state))
-        .with_graceful_shutdown(shutdown)
-        .await
+    let limits = state.edge.connections.clone();
+    edge::connections::serve(listener, app(state), limits, shutdown).await
 }
 
 #[utoipa::path(get, path = "/healthz", tag = "service",
@@ -263,6 +279,15 @@ pub fn serve_main(args: ServeArgs) -> ExitCode {
 }
 
 async fn run(args: ServeArgs) -> Result<(), String> {
+    let edge = edge::EdgeConfig::from_args(&args.edge)?;
+    if edge.tokens.is_empty() {
+        tracing::warn!("no bearer tokens configured: anyone who reaches the port may read and change the store");
+    } else {
+        tracing::info!(
+            tokens = edge.tokens.len(),
+            "bearer tokens required on /api/"
+        );
+    }
     let pool = connect_db(&args.database)
         .await
         .map_err(|e| format!("database {}: {e}", args.database))?;
@@ -273,7 +298,8 @@ async fn run(args: ServeArgs) -> Result<(), String> {
     tracing::info!(%addr, database = %args.database, "fieldbal serve listening");
     let state = AppState::new(pool.clone())
         .with_body_limit(args.body_limit_bytes)
-        .with_request_timeout(Duration::from_secs(args.request_timeout_secs));
+        .with_request_timeout(Duration::from_secs(args.request_timeout_secs))
+        .with_edge(edge);
     serve(listener, state, shutdown_signal())
         .await
         .map_err(|e| e.to_string())?;

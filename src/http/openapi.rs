@@ -1,7 +1,11 @@
 //! The OpenAPI document, generated from the handlers' `#[utoipa::path]` annotations.
 
 use axum::Json;
-use utoipa::OpenApi;
+use utoipa::openapi::path::{Operation, PathItem};
+use utoipa::openapi::response::ResponseBuilder;
+use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement, SecurityScheme};
+use utoipa::openapi::{ContentBuilder, Ref, RefOr};
+use utoipa::{Modify, OpenApi};
 
 use super::{runs, sessions, solve};
 
@@ -22,6 +26,7 @@ use super::{runs, sessions, solve};
         solve::list_solutions,
         document,
     ),
+    modifiers(&EdgeAnswers),
     tags(
         (name = "sessions", description = "Stored balancing sessions"),
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
@@ -35,4 +40,135 @@ pub struct ApiDoc;
     responses((status = 200, description = "This document")))]
 pub async fn document() -> Json<utoipa::openapi::OpenApi> {
     Json(ApiDoc::openapi())
+}
+
+/// What the edge (src/http/edge) may answer to any request, before or around
+/// its handler, added to every operation that does not declare it itself; and
+/// the optional bearer token (`--tokens-file`), not asked for by `/healthz`.
+struct EdgeAnswers;
+
+/// Which operations an edge answer applies to.
+#[derive(PartialEq)]
+enum Scope {
+    Every,
+    /// Under `/api/` (tokens, the body limit).
+    Api,
+    /// Under `/api/` with a request body (POST, PUT, PATCH).
+    Body,
+}
+
+const EDGE_ANSWERS: &[(&str, &str, Scope)] = &[
+    (
+        "400",
+        "Malformed request (path, query or header)",
+        Scope::Every,
+    ),
+    (
+        "401",
+        "A bearer token is configured and this one is missing or not valid",
+        Scope::Api,
+    ),
+    (
+        "403",
+        "A read-only token on a request that changes the store",
+        Scope::Api,
+    ),
+    (
+        "408",
+        "The request took longer than the request time limit",
+        Scope::Every,
+    ),
+    (
+        "413",
+        "Body (or its announced Content-Length) over the limit",
+        Scope::Api,
+    ),
+    ("414", "Request target over 8 KiB", Scope::Every),
+    (
+        "415",
+        "A request body without Content-Type: application/json",
+        Scope::Body,
+    ),
+    (
+        "421",
+        "The Host header is not a name this service answers to",
+        Scope::Every,
+    ),
+    (
+        "431",
+        "More than 100 header fields or 32 KiB of them",
+        Scope::Every,
+    ),
+    (
+        "500",
+        "Internal error; the server log has the details",
+        Scope::Every,
+    ),
+    (
+        "503",
+        "Too many open connections; retry after the Retry-After seconds",
+        Scope::Every,
+    ),
+];
+
+impl Modify for EdgeAnswers {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        let components = openapi.components.get_or_insert_with(Default::default);
+        components.add_security_scheme(
+            "bearer",
+            SecurityScheme::Http(HttpBuilder::new().scheme(HttpAuthScheme::Bearer).build()),
+        );
+        // A token only when the service is configured with some: either is valid.
+        openapi.security = Some(vec![
+            SecurityRequirement::new("bearer", Vec::<String>::new()),
+            SecurityRequirement::default(),
+        ]);
+        for (path, item) in openapi.paths.paths.iter_mut() {
+            let api = path.starts_with("/api/");
+            for (body, op) in operations(item) {
+                if !api {
+                    op.security = Some(Vec::new());
+                }
+                for (status, description, scope) in EDGE_ANSWERS {
+                    let applies = match scope {
+                        Scope::Every => true,
+                        Scope::Api => api,
+                        Scope::Body => api && body,
+                    };
+                    if !applies {
+                        continue;
+                    }
+                    op.responses
+                        .responses
+                        .entry(status.to_string())
+                        .or_insert_with(|| RefOr::T(error_response(description)));
+                }
+            }
+        }
+    }
+}
+
+/// Each operation of a path with whether it carries a request body.
+fn operations(item: &mut PathItem) -> impl Iterator<Item = (bool, &mut Operation)> {
+    [
+        (false, item.get.as_mut()),
+        (true, item.post.as_mut()),
+        (true, item.put.as_mut()),
+        (true, item.patch.as_mut()),
+        (false, item.delete.as_mut()),
+    ]
+    .into_iter()
+    .filter_map(|(write, op)| op.map(|op| (write, op)))
+}
+
+fn error_response(description: &str) -> utoipa::openapi::Response {
+    ResponseBuilder::new()
+        .description(description)
+        .content(
+            "application/json",
+            ContentBuilder::new()
+                .schema(Some(Ref::from_schema_name("ErrorBody")))
+                .build(),
+        )
+        .build()
 }

@@ -24,10 +24,13 @@ pub struct Created {
 /// Paging of the session list.
 #[derive(Debug, Deserialize, IntoParams)]
 #[serde(deny_unknown_fields)]
+#[into_params(parameter_in = Query)]
 pub struct ListParams {
     /// Sessions per page, 1 to 1000 (default 50).
+    #[param(minimum = 1, maximum = 1000)]
     pub limit: Option<i64>,
     /// Sessions to skip (default 0).
+    #[param(minimum = 0)]
     pub offset: Option<i64>,
 }
 

@@ -1,6 +1,8 @@
 // The stored-session REST API. Errors carry the server's
 // `{"error":{"code","message","field"}}` so the form can show them at the field.
 
+import { askToken, storedToken, storeToken } from "./token.js";
+
 const BASE = "/api/v1";
 
 export class ApiError extends Error {
@@ -12,12 +14,14 @@ export class ApiError extends Error {
   }
 }
 
-async function call(method, path, body) {
+async function call(method, path, body, retried) {
   const init = { method, headers: { Accept: "application/json" } };
-  if (body !== undefined) {
-    init.headers["Content-Type"] = "application/json";
-    init.body = JSON.stringify(body);
-  }
+  // Every write says JSON, body or not: the service refuses writes without it,
+  // so that no page elsewhere can change the store through this browser.
+  if (method !== "GET") init.headers["Content-Type"] = "application/json";
+  if (body !== undefined) init.body = JSON.stringify(body);
+  const token = storedToken();
+  if (token) init.headers.Authorization = `Bearer ${token}`;
   let resp;
   try {
     resp = await fetch(BASE + path, init);
@@ -33,6 +37,16 @@ async function call(method, path, body) {
       data = null;
     }
   }
+  if (resp.status === 401 && !retried) {
+    // Ask once; a token that is refused again is forgotten and the error shown.
+    storeToken(null);
+    const entered = await askToken(token ? "The service did not accept that access token. Enter another:" : "This fieldbal service needs an access token.");
+    if (entered) {
+      storeToken(entered);
+      return call(method, path, body, true);
+    }
+  }
+  if (resp.status === 401) storeToken(null);
   if (!resp.ok) {
     const err = (data && data.error) || {};
     throw new ApiError(resp.status, err.code || `http_${resp.status}`, err.message || `The service answered ${resp.status}.`, err.field);

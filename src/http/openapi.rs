@@ -7,7 +7,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, RefOr};
 use utoipa::{Modify, OpenApi};
 
-use super::{runs, sessions, solve};
+use super::{runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -24,6 +24,7 @@ use super::{runs, sessions, solve};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        trial_weights::trial_weights,
         document,
     ),
     modifiers(&EdgeAnswers),

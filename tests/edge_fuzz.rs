@@ -116,7 +116,7 @@ fn body(
             run["id"] = json!(id);
             run
         }
-        "SolveRequest" => json!({ "session": session }),
+        "SolveRequest" | "TrialRequest" => json!({ "session": session }),
         "SolveOptions" => json!({}),
         _ => schemas.instance(&schema, rng, 6),
     };

@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{runs, sessions, solve};
+use super::{identify, runs, sessions, solve};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -20,6 +20,9 @@ use super::{runs, sessions, solve};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        identify::rotor,
+        identify::free_decay,
+        identify::model,
         document,
     ),
     tags(
@@ -27,6 +30,7 @@ use super::{runs, sessions, solve};
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
+        (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]
 pub struct ApiDoc;

@@ -113,7 +113,7 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
 /// `ωτ` from `cos(ωτ)`, or an error when the samples do not oscillate (or
 /// alias: the method needs `ωτ < π`, more than two samples per period).
 fn angle_per_step(cos: f64) -> Result<f64, InputError> {
-    if !(cos.abs() < 1.0) {
+    if cos.is_nan() || cos.abs() >= 1.0 {
         return Err(InputError::unsolvable(
             "not_oscillatory",
             "the samples do not fit a decaying oscillation sampled at least twice per period",
@@ -149,7 +149,7 @@ fn viscous(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
     let b = DVector::from_iterator(rows, y[2..].iter().copied());
     let l = lsq::solve(a, &b, "the viscous decay model (7.1)")?;
     let ratio = -l[1];
-    if !(ratio > 0.0) {
+    if ratio.is_nan() || ratio <= 0.0 {
         return Err(InputError::unsolvable(
             "not_oscillatory",
             "the samples do not fit a decaying oscillation (e^{-2nτ} came out ≤ 0)",
@@ -194,7 +194,7 @@ fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
     let theta = angle_per_step(p[0] / 2.0)?;
     let w = theta / tau;
     let l = -p[1];
-    if !(l > -1.0 / y.len() as f64) {
+    if l.is_nan() || l <= -1.0 / y.len() as f64 {
         return Err(InputError::unsolvable(
             "not_oscillatory",
             "the samples do not fit a decay of the form a0/(1 + λt)",

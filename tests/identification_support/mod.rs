@@ -11,6 +11,7 @@ use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
+use serde_json::{json, Value};
 
 /// A Jeffcott rotor: `m z̈ + b ż + c z = D ω² e^{iωt}`, seen by a sensor
 /// turned by `sensor_turn` (rad) from the reference mark.
@@ -165,4 +166,21 @@ pub fn rk4_samples(
 pub fn round_to(x: f64, decimals: i32) -> f64 {
     let s = 10f64.powi(decimals);
     (x * s).round() / s
+}
+
+/// A valid `identify/free-decay` request: a viscous decay, 30 samples.
+pub fn free_decay_request() -> Value {
+    let samples: Vec<f64> = (0..30)
+        .map(|k| (-0.05 * k as f64).exp() * (0.7 * k as f64 + 0.3).cos())
+        .collect();
+    json!({"samples": samples, "dt_s": 0.05, "damping": "viscous"})
+}
+
+/// A valid `identify/model` request: a 2-mass chain, masses known.
+pub fn model_request() -> Value {
+    json!({
+        "mass": {"fixed": [[2.0, 0.0], [0.0, 1.0]]},
+        "stiffness": {"fixed": [[0.0, 0.0], [0.0, 0.0]], "parameters": [[[1.0, 0.0], [0.0, 0.0]], [[1.0, -1.0], [-1.0, 1.0]]]},
+        "modes": [{"frequency_hz": 4.11, "shape": [0.4, 0.93]}, {"frequency_hz": 10.3, "shape": [0.66, -0.61]}]
+    })
 }

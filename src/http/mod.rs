@@ -11,6 +11,7 @@ pub mod openapi;
 pub mod runs;
 pub mod sessions;
 pub mod solve;
+pub mod trial_weights;
 
 use std::future::Future;
 use std::process::ExitCode;
@@ -109,6 +110,7 @@ pub fn app(state: AppState) -> Router {
         .route("/api/v1/identify/rotor", post(identify::rotor))
         .route("/api/v1/identify/free-decay", post(identify::free_decay))
         .route("/api/v1/identify/model", post(identify::model))
+        .route("/api/v1/trial-weights", post(trial_weights::trial_weights))
         .route(
             "/api/v1/sessions",
             post(sessions::create).get(sessions::list),

@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{identify, runs, sessions, solve};
+use super::{identify, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -23,6 +23,7 @@ use super::{identify, runs, sessions, solve};
         identify::rotor,
         identify::free_decay,
         identify::model,
+        trial_weights::trial_weights,
         document,
     ),
     tags(

@@ -7,7 +7,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, RefOr};
 use utoipa::{Modify, OpenApi};
 
-use super::{runs, sessions, solve, trial_weights};
+use super::{identify, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -24,6 +24,9 @@ use super::{runs, sessions, solve, trial_weights};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        identify::rotor,
+        identify::free_decay,
+        identify::model,
         trial_weights::trial_weights,
         document,
     ),
@@ -33,6 +36,7 @@ use super::{runs, sessions, solve, trial_weights};
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
+        (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]
 pub struct ApiDoc;

@@ -117,7 +117,13 @@ fn constant_time_eq(a: &[u8], b: &[u8]) -> bool {
 }
 
 /// Stateless computations: a POST that stores nothing, open to read tokens.
-const COMPUTE_ONLY: &[&str] = &["/api/v1/solve", "/api/v1/trial-weights"];
+const COMPUTE_ONLY: &[&str] = &[
+    "/api/v1/solve",
+    "/api/v1/trial-weights",
+    "/api/v1/identify/rotor",
+    "/api/v1/identify/free-decay",
+    "/api/v1/identify/model",
+];
 
 /// Whether a request may change the store (any other method than a read,
 /// unless the path only computes).

@@ -64,7 +64,8 @@ pub fn least_squares(
         .map_err(|e| InputError::unsolvable("solver_failed", format!("least squares failed: {e}")))
 }
 
-/// The correction for the weighted problem, with any warnings the method adds.
+/// The correction for the weighted problem, with any warnings the method
+/// adds, and whether it is the plain least-squares one.
 ///
 /// Extension point: the objective and mass bounds of `options` choose the
 /// method here; plain least squares is the default.
@@ -74,12 +75,12 @@ fn correction(
     options: &SolveOptions,
     session: &Session,
     planes: &[usize],
-) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
+) -> Result<(DVector<Complex64>, Vec<Warning>, bool), InputError> {
     // Min-max and mass bounds are cone programs (method 4.1).
-    if let Some(found) = super::conic::wiring::correction(a, b, options, session, planes)? {
-        return Ok(found);
+    if let Some((c, w)) = super::conic::wiring::correction(a, b, options, session, planes)? {
+        return Ok((c, w, false));
     }
-    Ok((least_squares(a, b)?, Vec::new()))
+    Ok((least_squares(a, b)?, Vec::new(), true))
 }
 
 /// Solve a session: influence coefficients, corrections, predicted residual,
@@ -115,16 +116,36 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
         return Err(InputError::unsolvable(
             "too_few_readings",
             format!(
-                "{} correction planes need at least {} readings (sensor × speed) to balance on; {} are selected",
+                "{} correction planes need at least {} readings (sensor × speed) to balance on; {}",
                 planes.len(),
                 planes.len(),
-                selection.rows.len()
+                match selection.rows.len() {
+                    1 => "1 is selected".to_string(),
+                    n => format!("{n} are selected"),
+                }
             ),
         ));
     }
 
     let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
-    let (c, warnings) = correction(&a, &b, options, session, &planes)?;
+    let (mut c, warnings, plain) = correction(&a, &b, options, session, &planes)?;
+    let cov = uncertainty::reading_covariances(&checked, noise);
+    if plain {
+        // Noise in the influence coefficients biases least squares (errors in
+        // variables, issue 12): remove its second-order bias (uncertainty::bias).
+        let sel = &selection;
+        if let Some(bias) = uncertainty::bias(
+            &checked.t,
+            &checked.y,
+            &cov,
+            &sel.rows,
+            &sel.weights,
+            &planes,
+            &c,
+        ) {
+            c -= bias;
+        }
+    }
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
     let residual = checked.y.column(0) + &w_used * &c;
 
@@ -141,6 +162,6 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     let mut solution = report::solution(&fit, options, &a);
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
-    uncertainty::fill(&fit, options, noise, &mut solution);
+    uncertainty::fill(&fit, options, &cov, &mut solution);
     Ok(solution)
 }

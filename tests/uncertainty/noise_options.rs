@@ -65,7 +65,9 @@ fn the_scatter_of_samples_is_used_instead_of_the_options() {
     // the region is wider by about (10/0.5)²/30 ≈ 13 in variance.
     let ratio = var(&quiet_options) / var(&no_samples);
     assert!((8.0..20.0).contains(&ratio), "{ratio}");
-    // Twice the scatter, four times the variance.
+    // Twice the scatter, four times the variance (a little more: the bias
+    // correction of issue 12 moves the correction with the noise level, and the
+    // first-order covariance is evaluated there).
     let doubled: Vec<Vec<Vec<Complex64>>> = samples
         .iter()
         .zip(&y)
@@ -81,7 +83,7 @@ fn the_scatter_of_samples_is_used_instead_of_the_options() {
         &options(0.5, 0.5),
     );
     let ratio = var(&louder) / var(&quiet_options);
-    assert!((3.6..4.0).contains(&ratio), "{ratio}");
+    assert!((3.6..4.3).contains(&ratio), "{ratio}");
 }
 
 /// Warnings of one code and plane.
@@ -150,7 +152,8 @@ fn without_noise_the_regions_shrink_to_the_correction() {
         let u = corr.uncertainty.as_ref().unwrap();
         assert_eq!(u.covariance_g2, [[0.0; 2]; 2]);
         assert!(
-            (u.mass_g[0] - corr.mass_g).abs() < 1e-9 && (u.mass_g[1] - corr.mass_g).abs() < 1e-9
+            (u.mass_g.unwrap()[0] - corr.mass_g).abs() < 1e-9
+                && (u.mass_g.unwrap()[1] - corr.mass_g).abs() < 1e-9
         );
     }
     for r in &sol.predicted_residual {

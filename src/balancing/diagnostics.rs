@@ -168,9 +168,13 @@ mod tests {
     fn planes_the_readings_cannot_tell_apart_are_undetermined() {
         // Column 1 moves nothing; columns 2 and 3 are the same: only their sum is determined.
         let a = DMatrix::from_row_slice(
-            3,
+            4,
             4,
             &[
+                c(0.0, 3.0),
+                c(0.0, 0.0),
+                c(1.0, 1.0),
+                c(1.0, 1.0),
                 c(1.0, 0.0),
                 c(0.0, 0.0),
                 c(0.5, 1.0),

@@ -153,6 +153,8 @@ pub fn session(
                 id: format!("P{j}"),
                 radius_mm: None,
                 positions: None,
+                places_deg: None,
+                kit: None,
             })
             .collect(),
         sensors: (0..n)

@@ -64,23 +64,24 @@ pub fn least_squares(
         .map_err(|e| InputError::unsolvable("solver_failed", format!("least squares failed: {e}")))
 }
 
-/// The correction for the weighted problem, with any warnings the method
-/// adds, and whether it is the plain least-squares one.
+/// The correction for the weighted problem, with any warnings the method adds.
 ///
 /// Extension point: the objective and mass bounds of `options` choose the
-/// method here; plain least squares is the default.
+/// method here; plain least squares is the default. (The errors-in-variables
+/// bias correction `uncertainty::bias` is not applied here yet: with the
+/// assumed default noise it also moves the answer of exact readings, issue 12.)
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
     options: &SolveOptions,
     session: &Session,
     planes: &[usize],
-) -> Result<(DVector<Complex64>, Vec<Warning>, bool), InputError> {
+) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
     // Min-max and mass bounds are cone programs (method 4.1).
-    if let Some((c, w)) = super::conic::wiring::correction(a, b, options, session, planes)? {
-        return Ok((c, w, false));
+    if let Some(found) = super::conic::wiring::correction(a, b, options, session, planes)? {
+        return Ok(found);
     }
-    Ok((least_squares(a, b)?, Vec::new(), true))
+    Ok((least_squares(a, b)?, Vec::new()))
 }
 
 /// Solve a session: influence coefficients, corrections, predicted residual,
@@ -128,24 +129,8 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     }
 
     let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
-    let (mut c, warnings, plain) = correction(&a, &b, options, session, &planes)?;
+    let (c, warnings) = correction(&a, &b, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);
-    if plain {
-        // Noise in the influence coefficients biases least squares (errors in
-        // variables, issue 12): remove its second-order bias (uncertainty::bias).
-        let sel = &selection;
-        if let Some(bias) = uncertainty::bias(
-            &checked.t,
-            &checked.y,
-            &cov,
-            &sel.rows,
-            &sel.weights,
-            &planes,
-            &c,
-        ) {
-            c -= bias;
-        }
-    }
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
     let residual = checked.y.column(0) + &w_used * &c;
 

@@ -112,6 +112,13 @@ fn classify(path: String, err: &serde_json::Error) -> InputError {
                 field: Some(field),
             }
         }
+        // A struct posted as a positional array (see `wire`): not the format.
+        Category::Data if message.ends_with(super::wire::NOT_AN_OBJECT) => InputError {
+            kind: ErrorKind::Malformed,
+            code: "not_an_object",
+            message: format!("{message}: give the fields by name"),
+            field: if path.is_empty() { None } else { Some(path) },
+        },
         Category::Data => {
             let (code, field) = match message.strip_prefix("missing field `") {
                 Some(rest) => {
@@ -180,6 +187,24 @@ mod tests {
         let err = from_json::<serde_json::Value>(b"{} x").unwrap_err();
         assert_eq!(err.code, "malformed_json");
         assert!(from_json::<serde_json::Value>(b"{} \n").is_ok());
+    }
+
+    #[test]
+    fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
+        let cases: [(&[u8], Option<&str>); 4] = [
+            (br#"["x", null, null, null, [], [], []]"#, None),
+            (br#"{"name":"x","planes":[["A", 100]],"sensors":[],"runs":[]}"#, Some("planes[0]")),
+            (br#"{"name":"x","conventions":["lag","against_rotation"],"planes":[],"sensors":[],"runs":[]}"#, Some("conventions")),
+            (br#"{"name":"x","planes":[],"sensors":[],"runs":[{"id":"r","weights":[],"readings":[[1000,"s",1,2]]}]}"#, Some("runs[0].readings[0]")),
+        ];
+        for (body, field) in cases {
+            let err = from_json::<Session>(body).unwrap_err();
+            assert_eq!(err.kind, ErrorKind::Malformed, "{err:?}");
+            assert_eq!(err.code, "not_an_object");
+            assert_eq!(err.field.as_deref(), field);
+        }
+        let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();
+        assert_eq!(err.code, "not_an_object");
     }
 
     #[test]

@@ -17,6 +17,7 @@ use super::{runs, sessions, solve};
         sessions::delete,
         runs::append,
         runs::replace,
+        runs::get,
         runs::versions,
         solve::create_solution,
         solve::list_solutions,

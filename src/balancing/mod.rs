@@ -12,6 +12,7 @@ pub mod wire;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;
+pub mod fit;
 pub mod identify;
 pub mod influence;
 pub mod limits;

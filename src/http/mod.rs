@@ -13,6 +13,7 @@ pub mod sessions;
 pub mod solve;
 #[cfg(test)]
 mod time_limit_tests;
+pub mod trial_weights;
 pub mod work;
 
 use std::future::Future;
@@ -151,6 +152,7 @@ pub fn app(state: AppState) -> Router {
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
+        .route("/api/v1/trial-weights", post(trial_weights::trial_weights))
         .route(
             "/api/v1/sessions",
             post(sessions::create).get(sessions::list),

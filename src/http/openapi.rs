@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{runs, sessions, solve};
+use super::{runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -21,6 +21,7 @@ use super::{runs, sessions, solve};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        trial_weights::trial_weights,
         document,
     ),
     tags(

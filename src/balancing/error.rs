@@ -112,13 +112,6 @@ fn classify(path: String, err: &serde_json::Error) -> InputError {
                 field: Some(field),
             }
         }
-        // A struct posted as a positional array (see `wire`): not the format.
-        Category::Data if message.ends_with(super::wire::NOT_AN_OBJECT) => InputError {
-            kind: ErrorKind::Malformed,
-            code: "not_an_object",
-            message: format!("{message}: give the fields by name"),
-            field: if path.is_empty() { None } else { Some(path) },
-        },
         Category::Data => {
             let (code, field) = match message.strip_prefix("missing field `") {
                 Some(rest) => {
@@ -199,12 +192,14 @@ mod tests {
         ];
         for (body, field) in cases {
             let err = from_json::<Session>(body).unwrap_err();
-            assert_eq!(err.kind, ErrorKind::Malformed, "{err:?}");
-            assert_eq!(err.code, "not_an_object");
+            // 422 invalid_type, like any other value of the wrong type (v1).
+            assert_eq!(err.kind, ErrorKind::Invalid, "{err:?}");
+            assert_eq!(err.code, "invalid_type");
+            assert!(err.message.ends_with(super::super::wire::NOT_AN_OBJECT));
             assert_eq!(err.field.as_deref(), field);
         }
         let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();
-        assert_eq!(err.code, "not_an_object");
+        assert_eq!(err.code, "invalid_type");
     }
 
     #[test]

@@ -7,7 +7,7 @@
 //! the deserializer for a map so that an array is refused (400, naming the
 //! field, see `error::classify`).
 
-/// The phrase `error::classify` recognises in serde's message for an array given as an object.
+/// What serde's message says was expected where an array was given.
 pub const NOT_AN_OBJECT: &str = "a JSON object, not an array";
 
 /// Implement `Serialize` and map-only `Deserialize` for `#[serde(remote = "Self")]` structs.

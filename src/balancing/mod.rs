@@ -13,7 +13,6 @@ pub mod conic;
 pub mod diagnostics;
 pub mod error;
 pub mod fit;
-pub mod identify;
 pub mod influence;
 pub mod limits;
 pub mod model;

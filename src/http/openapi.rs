@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{runs, sessions, solve, trial_weights};
+use super::{identify, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -21,6 +21,9 @@ use super::{runs, sessions, solve, trial_weights};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        identify::rotor,
+        identify::free_decay,
+        identify::model,
         trial_weights::trial_weights,
         document,
     ),
@@ -29,6 +32,7 @@ use super::{runs, sessions, solve, trial_weights};
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
+        (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]
 pub struct ApiDoc;

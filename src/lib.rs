@@ -6,7 +6,7 @@
 //!   influence coefficients, free decay, discrete-model correction).
 //! - [`http`]: the REST service and the embedded web form.
 //! - [`db`]: storage of sessions, runs and solutions in SQLite.
-//! - [`cli`]: `fieldbal serve` and `fieldbal solve`.
+//! - [`cli`]: `fieldbal serve`, `fieldbal solve` and `fieldbal identify`.
 //!
 //! Angle conventions are the session's own at every edge (phase `lag`/`lead`,
 //! weight angles `against_rotation`/`with_rotation`); see `balancing`.

@@ -101,22 +101,30 @@ fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
 }
 
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {
-    match solve_file_inner(file, options) {
-        Ok(solution) => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&solution).expect("solution serialises")
-            );
-            ExitCode::SUCCESS
-        }
-        Err(err) => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&err.to_json()).expect("error serialises")
-            );
-            ExitCode::from(2)
+    let (value, code) = match solve_file_inner(file, options) {
+        Ok(solution) => (solution, ExitCode::SUCCESS),
+        Err(err) => (err.to_json(), ExitCode::from(2)),
+    };
+    let text = serde_json::to_string_pretty(&value).expect("JSON values serialise");
+    match print_line(&text) {
+        Ok(()) => code,
+        // `fieldbal solve FILE | head`: the reader has what it wanted; stop quietly.
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => code,
+        Err(e) => {
+            eprintln!("fieldbal solve: cannot write the answer: {e}");
+            ExitCode::FAILURE
         }
     }
+}
+
+/// Write `text` and a newline to standard output; unlike `println!`, a
+/// closed pipe is an error to handle, not a panic.
+fn print_line(text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())?;
+    out.write_all(b"\n")?;
+    out.flush()
 }
 
 /// The file's bytes; `-` reads standard input.

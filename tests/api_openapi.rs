@@ -24,6 +24,7 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/api/v1/sessions/{id}", "get"),
         ("/api/v1/sessions/{id}", "delete"),
         ("/api/v1/sessions/{id}/runs", "post"),
+        ("/api/v1/sessions/{id}/runs/{run_id}", "get"),
         ("/api/v1/sessions/{id}/runs/{run_id}", "put"),
         ("/api/v1/sessions/{id}/runs/{run_id}/versions", "get"),
         ("/api/v1/sessions/{id}/solutions", "post"),

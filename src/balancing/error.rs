@@ -183,6 +183,26 @@ mod tests {
     }
 
     #[test]
+    fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
+        let cases: [(&[u8], Option<&str>); 4] = [
+            (br#"["x", null, null, null, [], [], []]"#, None),
+            (br#"{"name":"x","planes":[["A", 100]],"sensors":[],"runs":[]}"#, Some("planes[0]")),
+            (br#"{"name":"x","conventions":["lag","against_rotation"],"planes":[],"sensors":[],"runs":[]}"#, Some("conventions")),
+            (br#"{"name":"x","planes":[],"sensors":[],"runs":[{"id":"r","weights":[],"readings":[[1000,"s",1,2]]}]}"#, Some("runs[0].readings[0]")),
+        ];
+        for (body, field) in cases {
+            let err = from_json::<Session>(body).unwrap_err();
+            // 422 invalid_type, like any other value of the wrong type (v1).
+            assert_eq!(err.kind, ErrorKind::Invalid, "{err:?}");
+            assert_eq!(err.code, "invalid_type");
+            assert!(err.message.ends_with(super::super::wire::NOT_AN_OBJECT));
+            assert_eq!(err.field.as_deref(), field);
+        }
+        let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();
+        assert_eq!(err.code, "invalid_type");
+    }
+
+    #[test]
     fn broken_json_is_malformed() {
         let err = from_json::<Session>(b"{\"name\": ").unwrap_err();
         assert_eq!(err.kind, ErrorKind::Malformed);

@@ -7,11 +7,14 @@
 //! complex-linear in it. The session's own conventions are applied only when
 //! values enter (`phasor`) and leave (`solution`).
 
+#[macro_use]
+pub mod wire;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;
 pub mod fit;
 pub mod influence;
+pub mod limits;
 pub mod model;
 pub mod phasor;
 pub mod practical;
@@ -65,5 +68,6 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 
 /// Solve a session with options.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
+    limits::check_options(options, &limits::Limits::current())?;
     solve::solve(session, options)
 }

@@ -32,6 +32,7 @@ pub enum AngleDirection {
 
 /// The session's angle conventions; every angle in requests and responses uses them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Conventions {
     #[serde(default)]
@@ -64,6 +65,7 @@ impl Conventions {
 
 /// Rotor data for the ISO 21940-11 tolerance (method §5.2).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Rotor {
     pub mass_kg: f64,
@@ -74,6 +76,7 @@ pub struct Rotor {
 
 /// A correction plane.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Plane {
     pub id: String,
@@ -96,6 +99,7 @@ pub struct Plane {
 /// The weights a fitter has for a plane: any number of each size, stacked at most
 /// `max_per_place` at one place.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Kit {
     /// The weight sizes, grams (finite, greater than 0).
@@ -124,6 +128,7 @@ pub enum Unit {
 
 /// A vibration sensor.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Sensor {
     pub id: String,
@@ -134,6 +139,7 @@ pub struct Sensor {
 
 /// A weight on the rotor during a run, relative to the reference state.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Weight {
     pub plane: String,
@@ -144,6 +150,7 @@ pub struct Weight {
 
 /// One repeated 1X sample of a reading.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Sample {
     pub amplitude: f64,
@@ -152,6 +159,7 @@ pub struct Sample {
 
 /// One 1X reading of one sensor at one speed.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Reading {
     pub speed_rpm: f64,
@@ -167,6 +175,7 @@ pub struct Reading {
 
 /// A run: the weights on the rotor and the readings taken.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Run {
     pub id: String,
@@ -177,6 +186,7 @@ pub struct Run {
 
 /// A balancing session (`docs/session-format.md`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Session {
     pub name: String,
@@ -204,6 +214,7 @@ pub enum Objective {
 
 /// A weight on the rows that match a sensor, a speed, or both.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct RowWeight {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -215,6 +226,7 @@ pub struct RowWeight {
 
 /// Solve options; all optional.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct SolveOptions {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -250,9 +262,27 @@ pub struct SolveOptions {
 
 /// The body of `POST /api/v1/solve`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct SolveRequest {
     pub session: Session,
     #[serde(default)]
     pub options: SolveOptions,
 }
+
+// Objects only: a positional array is refused (see `wire`).
+objects_only!(
+    Conventions,
+    Rotor,
+    Plane,
+    Kit,
+    Sensor,
+    Weight,
+    Sample,
+    Reading,
+    Run,
+    Session,
+    RowWeight,
+    SolveOptions,
+    SolveRequest,
+);

@@ -11,6 +11,7 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 
 use super::error::InputError;
+use super::limits::{check_session, too_large, Limits};
 use super::model::{Conventions, Reading, Session};
 use super::phasor::{reading_in, weight_in};
 
@@ -18,6 +19,9 @@ use super::phasor::{reading_in, weight_in};
 pub const SPEED_TOLERANCE: f64 = 0.01;
 const MAX_SPEED_RPM: f64 = 1e6;
 const MAX_AMPLITUDE: f64 = 1e9;
+/// Smallest non-zero amplitude: no instrument resolves 1e-9 of its unit, and
+/// far smaller ones (1e-100) underflow when squared twice in the 95 % figures.
+const MIN_AMPLITUDE: f64 = 1e-9;
 const MAX_MASS_G: f64 = 1e7;
 const MAX_RADIUS_MM: f64 = 1e5;
 const MAX_ANGLE_DEG: f64 = 1e6;
@@ -126,6 +130,18 @@ fn check_positive(
     Ok(())
 }
 
+/// An amplitude: 0, or from [`MIN_AMPLITUDE`] to [`MAX_AMPLITUDE`].
+fn check_amplitude(field: impl Fn() -> String, x: f64) -> Result<(), InputError> {
+    check_positive(&field, x, MAX_AMPLITUDE, true, "the amplitude")?;
+    if x != 0.0 && x < MIN_AMPLITUDE {
+        return Err(invalid(
+            field(),
+            format!("the amplitude {x} is below {MIN_AMPLITUDE} of its unit, which no instrument resolves: give 0 for no vibration, or use a smaller unit"),
+        ));
+    }
+    Ok(())
+}
+
 fn check_angle(field: impl FnOnce() -> String, x: f64) -> Result<(), InputError> {
     if !x.is_finite() || x.abs() > MAX_ANGLE_DEG {
         return Err(invalid(
@@ -171,17 +187,36 @@ fn cluster_speeds(mut speeds: Vec<f64>) -> Vec<Vec<f64>> {
 }
 
 /// The point with a member speed within 1 % of `speed`, the nearest one if several.
+///
+/// Members are sorted across points (clusters do not overlap), and the relative
+/// distance `|speed − m| / m` falls as `m` rises towards `speed` from below and
+/// grows as `m` rises above it, so only the two members around `speed` can be
+/// nearest: a binary search, O(log speeds) per reading.
 fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
+    // Points whose lowest member is <= speed: the last of them holds the member below.
+    let p = points.partition_point(|members| members[0] <= speed);
+    let below = p.checked_sub(1).map(|q| {
+        let k = points[q].partition_point(|&m| m <= speed);
+        (q, points[q][k - 1])
+    });
+    let above = match below {
+        Some((q, _)) => {
+            let k = points[q].partition_point(|&m| m < speed);
+            points[q]
+                .get(k)
+                .map(|&m| (q, m))
+                .or_else(|| points.get(q + 1).map(|n| (q + 1, n[0])))
+        }
+        None => points.first().map(|n| (0, n[0])),
+    };
     let mut best: Option<(usize, f64)> = None;
-    for (p, members) in points.iter().enumerate() {
-        for &m in members {
-            let rel = (speed - m).abs() / m;
-            if rel <= SPEED_TOLERANCE * (1.0 + 1e-12) && best.is_none_or(|(_, r)| rel < r) {
-                best = Some((p, rel));
-            }
+    for (q, m) in below.into_iter().chain(above) {
+        let rel = (speed - m).abs() / m;
+        if rel <= SPEED_TOLERANCE * (1.0 + 1e-12) && best.is_none_or(|(_, r)| rel < r) {
+            best = Some((q, rel));
         }
     }
-    best.map(|(p, _)| p)
+    best.map(|(q, _)| q)
 }
 
 fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputError> {
@@ -270,13 +305,7 @@ fn check_reading(
             format!("no sensor has the id '{}'", r.sensor),
         )
     })?;
-    check_positive(
-        || format!("{}.amplitude", f()),
-        r.amplitude,
-        MAX_AMPLITUDE,
-        true,
-        "the amplitude",
-    )?;
+    check_amplitude(|| format!("{}.amplitude", f()), r.amplitude)?;
     check_angle(|| format!("{}.phase_deg", f()), r.phase_deg)?;
     if let Some(samples) = &r.samples {
         if samples.len() < 2 {
@@ -286,13 +315,7 @@ fn check_reading(
             ));
         }
         for (k, s) in samples.iter().enumerate() {
-            check_positive(
-                || format!("{}.samples[{k}].amplitude", f()),
-                s.amplitude,
-                MAX_AMPLITUDE,
-                true,
-                "the amplitude",
-            )?;
+            check_amplitude(|| format!("{}.samples[{k}].amplitude", f()), s.amplitude)?;
             check_angle(|| format!("{}.samples[{k}].phase_deg", f()), s.phase_deg)?;
         }
     }
@@ -301,6 +324,9 @@ fn check_reading(
 
 /// Validate a session and bring it into the internal frame.
 pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
+    // Counts first: nothing below allocates more than the lists' lengths allow.
+    let limits = Limits::current();
+    check_session(session, &limits)?;
     let conventions = session.conventions.unwrap_or_default();
     let (planes, sensors) = check_setup(session)?;
     unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
@@ -357,6 +383,14 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     }
 
     let points = cluster_speeds(ref_run.readings.iter().map(|r| r.speed_rpm).collect());
+    if points.len() > limits.speed_points {
+        return Err(too_large(
+            format!("runs[{reference}].readings"),
+            "speed points (speeds more than 1 % apart) in the reference run",
+            points.len(),
+            limits.speed_points,
+        ));
+    }
     let runs: Vec<usize> = std::iter::once(reference)
         .chain((0..session.runs.len()).filter(|&i| i != reference))
         .collect();
@@ -451,4 +485,40 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
         y,
         t,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The scan over every member that the binary search replaced.
+    fn nearest_by_scan(points: &[Vec<f64>], speed: f64) -> Option<usize> {
+        let mut best: Option<(usize, f64)> = None;
+        for (p, members) in points.iter().enumerate() {
+            for &m in members {
+                let rel = (speed - m).abs() / m;
+                if rel <= SPEED_TOLERANCE * (1.0 + 1e-12) && best.is_none_or(|(_, r)| rel < r) {
+                    best = Some((p, rel));
+                }
+            }
+        }
+        best.map(|(p, _)| p)
+    }
+
+    #[test]
+    fn the_binary_search_finds_the_point_the_full_scan_finds() {
+        let speeds = vec![
+            1000.0, 1004.0, 1009.0, 1012.0, 1019.0, 1500.0, 1503.0, 3000.0, 3029.0, 3031.0,
+        ];
+        let points = cluster_speeds(speeds);
+        let mut s = 900.0;
+        while s < 3200.0 {
+            assert_eq!(
+                nearest_point(&points, s),
+                nearest_by_scan(&points, s),
+                "{s}"
+            );
+            s += 0.37;
+        }
+    }
 }

@@ -5,6 +5,7 @@ use serde::Serialize;
 use sqlx::{Row, SqliteConnection};
 use utoipa::ToSchema;
 
+use super::idempotency::Keep;
 use super::{sessions, Db, StoreError};
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
@@ -22,7 +23,20 @@ pub struct RunVersion {
 }
 
 /// Checks a session with a new or changed run at `index` before it is stored.
-pub type Check<'a> = &'a (dyn Fn(&Session, usize) -> Result<(), InputError> + Sync);
+pub type Check = fn(&Session, usize) -> Result<(), InputError>;
+
+/// Run `check` on the blocking pool: a session of many readings takes
+/// milliseconds to validate, which must not stall an async thread.
+async fn check_off_async(
+    session: Session,
+    index: usize,
+    check: Check,
+) -> Result<Session, StoreError> {
+    tokio::task::spawn_blocking(move || check(&session, index).map(|()| session))
+        .await
+        .map_err(|e| StoreError::Db(sqlx::Error::Protocol(format!("validation panicked: {e}"))))?
+        .map_err(StoreError::Invalid)
+}
 
 /// Insert a run that does not exist yet, as version 1.
 pub(crate) async fn insert_new(
@@ -65,8 +79,16 @@ pub(crate) async fn current(conn: &mut SqliteConnection, seq: i64) -> Result<Vec
 
 /// Append a run to a stored session after `check` accepts the session with it.
 /// Returns the run's index in the session.
-pub async fn append(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<usize, StoreError> {
+/// With `keep`, the answer is kept for its `Idempotency-Key` in the same transaction.
+pub async fn append(
+    db: &Db,
+    id: &str,
+    run: &Run,
+    check: Check,
+    keep: Option<&Keep<'_>>,
+) -> Result<usize, StoreError> {
     let mut tx = db.begin_write().await?;
+    Keep::guard(keep, &mut tx).await?;
     let (seq, mut session) = sessions::load(&mut tx, id).await?;
     if session.runs.iter().any(|r| r.id == run.id) {
         return Err(StoreError::Conflict {
@@ -79,7 +101,7 @@ pub async fn append(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<us
     }
     let index = session.runs.len();
     session.runs.push(run.clone());
-    check(&session, index).map_err(StoreError::Invalid)?;
+    check_off_async(session, index, check).await?;
     let position: i64 =
         sqlx::query("SELECT COALESCE(MAX(position), -1) + 1 FROM runs WHERE session_seq = ?")
             .bind(seq)
@@ -87,14 +109,32 @@ pub async fn append(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<us
             .await?
             .get(0);
     insert_new(&mut tx, seq, position, run).await?;
+    Keep::remember(keep, &mut tx).await?;
     tx.commit().await?;
     Ok(index)
 }
 
 /// Replace the current version of a run by a new one, keeping the old; returns the new version number.
-pub async fn replace(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<i64, StoreError> {
+/// With `if_match`, only while the run's current version is one of those (else `Stale`).
+pub async fn replace(
+    db: &Db,
+    id: &str,
+    run: &Run,
+    check: Check,
+    if_match: Option<&[i64]>,
+) -> Result<i64, StoreError> {
     let mut tx = db.begin_write().await?;
     let (seq, mut session) = sessions::load(&mut tx, id).await?;
+    if let Some(wanted) = if_match {
+        let current = current_version(&mut tx, seq, &run.id).await?;
+        if current.is_some_and(|v| !wanted.contains(&v)) {
+            return Err(StoreError::Stale(format!(
+                "run '{}' changed meanwhile: its current version is {}; read it again and reapply the correction",
+                run.id,
+                current.unwrap_or_default()
+            )));
+        }
+    }
     let index = session
         .runs
         .iter()
@@ -106,7 +146,7 @@ pub async fn replace(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<i
             ))
         })?;
     session.runs[index] = run.clone();
-    check(&session, index).map_err(StoreError::Invalid)?;
+    check_off_async(session, index, check).await?;
     let version: i64 = sqlx::query(
         "UPDATE runs SET version = (SELECT MAX(version) + 1 FROM run_versions WHERE session_seq = ?1 AND run_id = ?2)
          WHERE session_seq = ?1 AND run_id = ?2 RETURNING version",
@@ -129,24 +169,40 @@ pub async fn replace(db: &Db, id: &str, run: &Run, check: Check<'_>) -> Result<i
     Ok(version)
 }
 
-/// Every version of a run, oldest first.
-pub async fn versions(db: &Db, id: &str, run_id: &str) -> Result<Vec<RunVersion>, StoreError> {
+/// A page of a run's versions, oldest first, and how many there are in all.
+pub async fn versions(
+    db: &Db,
+    id: &str,
+    run_id: &str,
+    limit: i64,
+    offset: i64,
+) -> Result<(Vec<RunVersion>, i64), StoreError> {
     let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT v.version, v.created_at, v.body, v.version = r.version AS current
          FROM run_versions v JOIN runs r ON r.session_seq = v.session_seq AND r.run_id = v.run_id
-         WHERE v.session_seq = ? AND v.run_id = ? ORDER BY v.version",
+         WHERE v.session_seq = ? AND v.run_id = ? ORDER BY v.version LIMIT ? OFFSET ?",
     )
     .bind(seq)
     .bind(run_id)
+    .bind(limit)
+    .bind(offset)
     .fetch_all(&db.pool)
     .await?;
-    if rows.is_empty() {
+    let total: i64 =
+        sqlx::query("SELECT COUNT(*) FROM run_versions WHERE session_seq = ? AND run_id = ?")
+            .bind(seq)
+            .bind(run_id)
+            .fetch_one(&db.pool)
+            .await?
+            .get(0);
+    if total == 0 {
         return Err(StoreError::NotFound(format!(
             "session '{id}' has no run with the id '{run_id}'"
         )));
     }
-    rows.iter()
+    let page = rows
+        .iter()
         .map(|r| {
             Ok(RunVersion {
                 version: r.get("version"),
@@ -155,5 +211,41 @@ pub async fn versions(db: &Db, id: &str, run_id: &str) -> Result<Vec<RunVersion>
                 run: serde_json::from_str(r.get("body"))?,
             })
         })
-        .collect()
+        .collect::<Result<_, StoreError>>()?;
+    Ok((page, total))
+}
+
+/// The current version number of a run, if the session has it.
+async fn current_version(
+    conn: &mut SqliteConnection,
+    seq: i64,
+    run_id: &str,
+) -> Result<Option<i64>, StoreError> {
+    Ok(
+        sqlx::query("SELECT version FROM runs WHERE session_seq = ? AND run_id = ?")
+            .bind(seq)
+            .bind(run_id)
+            .fetch_optional(&mut *conn)
+            .await?
+            .map(|r| r.get(0)),
+    )
+}
+
+/// The current version of one run and its number.
+pub async fn get(db: &Db, id: &str, run_id: &str) -> Result<(Run, i64), StoreError> {
+    let mut conn = db.pool.acquire().await?;
+    let seq = sessions::seq_of(&mut *conn, id).await?;
+    let row = sqlx::query(
+        "SELECT v.body, r.version FROM runs r
+         JOIN run_versions v ON v.session_seq = r.session_seq AND v.run_id = r.run_id AND v.version = r.version
+         WHERE r.session_seq = ? AND r.run_id = ?",
+    )
+    .bind(seq)
+    .bind(run_id)
+    .fetch_optional(&mut *conn)
+    .await?
+    .ok_or_else(|| {
+        StoreError::NotFound(format!("session '{id}' has no run with the id '{run_id}'"))
+    })?;
+    Ok((serde_json::from_str(row.get("body"))?, row.get("version")))
 }

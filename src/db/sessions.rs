@@ -4,6 +4,7 @@ use serde::Serialize;
 use sqlx::{Row, Sqlite};
 use utoipa::ToSchema;
 
+use super::idempotency::Keep;
 use super::{runs, Db, StoreError};
 use crate::balancing::model::Session;
 
@@ -31,12 +32,19 @@ pub struct SessionList {
 }
 
 /// Store a validated session under `id` with its runs, in one transaction.
-pub async fn create(db: &Db, id: &str, session: &Session) -> Result<(), StoreError> {
+/// With `keep`, the answer is kept for its `Idempotency-Key` in the same transaction.
+pub async fn create(
+    db: &Db,
+    id: &str,
+    session: &Session,
+    keep: Option<&Keep<'_>>,
+) -> Result<(), StoreError> {
     let setup = Session {
         runs: Vec::new(),
         ..session.clone()
     };
     let mut tx = db.begin_write().await?;
+    Keep::guard(keep, &mut tx).await?;
     let seq: i64 = sqlx::query(
         "INSERT INTO sessions (id, name, machine, setup) VALUES (?, ?, ?, ?) RETURNING seq",
     )
@@ -50,6 +58,7 @@ pub async fn create(db: &Db, id: &str, session: &Session) -> Result<(), StoreErr
     for (position, run) in session.runs.iter().enumerate() {
         runs::insert_new(&mut tx, seq, position as i64, run).await?;
     }
+    Keep::remember(keep, &mut tx).await?;
     tx.commit().await?;
     Ok(())
 }

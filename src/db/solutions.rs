@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 use sqlx::Row;
 use utoipa::ToSchema;
 
+use super::idempotency::{self, Idem};
 use super::{sessions, Db, StoreError};
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::Solution;
@@ -64,10 +65,12 @@ pub async fn store(
     solved: Solved,
     options: &SolveOptions,
     solution: &Solution,
+    idem: Option<&Idem>,
 ) -> Result<StoredSolution, StoreError> {
     let solution = serde_json::to_value(solution)?;
     let fieldbal_version = env!("CARGO_PKG_VERSION").to_string();
     let mut tx = db.begin_write().await?;
+    idempotency::guard(&mut tx, idem).await?;
     // The session may have been deleted meanwhile: then nothing is inserted.
     let row = sqlx::query(
         "INSERT INTO solutions (session_seq, options, run_versions, solution, fieldbal_version)
@@ -82,28 +85,43 @@ pub async fn store(
     .fetch_optional(&mut *tx)
     .await?
     .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))?;
-    tx.commit().await?;
-    Ok(StoredSolution {
+    let stored = StoredSolution {
         id: row.get("seq"),
         created_at: row.get("created_at"),
         fieldbal_version,
         options: options.clone(),
         runs: solved.runs,
         solution,
-    })
+    };
+    idempotency::remember(&mut tx, idem, 201, None, &stored).await?;
+    tx.commit().await?;
+    Ok(stored)
 }
 
-/// Every stored solution of a session, oldest first.
-pub async fn list(db: &Db, id: &str) -> Result<Vec<StoredSolution>, StoreError> {
+/// A page of a session's stored solutions, oldest first, and how many there are in all.
+pub async fn list(
+    db: &Db,
+    id: &str,
+    limit: i64,
+    offset: i64,
+) -> Result<(Vec<StoredSolution>, i64), StoreError> {
     let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
-         FROM solutions WHERE session_seq = ? ORDER BY seq",
+         FROM solutions WHERE session_seq = ? ORDER BY seq LIMIT ? OFFSET ?",
     )
     .bind(seq)
+    .bind(limit)
+    .bind(offset)
     .fetch_all(&db.pool)
     .await?;
-    rows.iter()
+    let total: i64 = sqlx::query("SELECT COUNT(*) FROM solutions WHERE session_seq = ?")
+        .bind(seq)
+        .fetch_one(&db.pool)
+        .await?
+        .get(0);
+    let page = rows
+        .iter()
         .map(|r| {
             Ok(StoredSolution {
                 id: r.get("seq"),
@@ -114,5 +132,6 @@ pub async fn list(db: &Db, id: &str) -> Result<Vec<StoredSolution>, StoreError> 
                 solution: serde_json::from_str(r.get("solution"))?,
             })
         })
-        .collect()
+        .collect::<Result<_, StoreError>>()?;
+    Ok((page, total))
 }

@@ -93,6 +93,35 @@ impl From<StoreError> for ApiError {
                 ApiError::new(StatusCode::CONFLICT, "duplicate_id", message).with_field(field)
             }
             StoreError::Invalid(input) => input.into(),
+            StoreError::KeyReused => ApiError::new(
+                StatusCode::UNPROCESSABLE_ENTITY,
+                "idempotency_key_reused",
+                "this Idempotency-Key was used for a different request (method, path or body); use a new key",
+            )
+            .with_field("Idempotency-Key"),
+            StoreError::Stale(message) => {
+                ApiError::new(StatusCode::PRECONDITION_FAILED, "precondition_failed", message)
+                    .with_field("If-Match")
+            }
+            // Handlers answer a replay themselves; reaching here is a bug.
+            StoreError::Replayed(_) => ApiError::internal(&e),
+            // Storage faults are not bugs: say what happened, log the cause.
+            StoreError::Storage(cause) => {
+                tracing::error!(error = %cause, "the database cannot be written");
+                if crate::db::health::is_full(&cause) {
+                    ApiError::new(
+                        StatusCode::INSUFFICIENT_STORAGE,
+                        "storage_full",
+                        "the disk holding the database is full; nothing was stored",
+                    )
+                } else {
+                    ApiError::new(
+                        StatusCode::SERVICE_UNAVAILABLE,
+                        "storage_unavailable",
+                        "the database cannot be written; nothing was stored",
+                    )
+                }
+            }
             StoreError::Db(_) | StoreError::Corrupt(_) => ApiError::internal(&e),
         }
     }

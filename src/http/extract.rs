@@ -16,7 +16,7 @@ pub struct JsonBody<T>(pub T);
 
 impl<T, S> FromRequest<S> for JsonBody<T>
 where
-    T: DeserializeOwned,
+    T: DeserializeOwned + Send + 'static,
     S: Send + Sync,
 {
     type Rejection = ApiError;
@@ -25,7 +25,7 @@ where
         // Refuse a wrong content type before reading a possibly large body.
         check_content_type(req.headers())?;
         let (_, bytes) = read(req, state).await?;
-        Ok(JsonBody(from_json(&bytes)?))
+        Ok(JsonBody(parse(bytes).await?))
     }
 }
 
@@ -43,6 +43,20 @@ impl<S: Send + Sync> FromRequest<S> for OptionsBody {
         check_content_type(&headers)?;
         Ok(OptionsBody(from_json(&bytes)?))
     }
+}
+
+/// Bodies larger than this are parsed on the blocking pool: parsing a few
+/// MiB takes milliseconds, which must not stall an async thread.
+const INLINE_PARSE_BYTES: usize = 64 * 1024;
+
+async fn parse<T: DeserializeOwned + Send + 'static>(bytes: Bytes) -> Result<T, ApiError> {
+    if bytes.len() <= INLINE_PARSE_BYTES {
+        return Ok(from_json(&bytes)?);
+    }
+    tokio::task::spawn_blocking(move || from_json(&bytes))
+        .await
+        .map_err(|e| ApiError::internal(&e))?
+        .map_err(ApiError::from)
 }
 
 /// Buffer the body; the router's `DefaultBodyLimit` bounds its size.

@@ -7,12 +7,16 @@ pub mod assets;
 pub mod edge;
 pub mod error;
 pub mod extract;
+pub mod headers;
 pub mod identify;
 pub mod openapi;
 pub mod runs;
 pub mod sessions;
 pub mod solve;
+#[cfg(test)]
+mod time_limit_tests;
 pub mod trial_weights;
+pub mod work;
 
 use std::future::Future;
 use std::process::ExitCode;
@@ -29,6 +33,7 @@ use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetReques
 use tower_http::trace::{DefaultOnResponse, TraceLayer};
 use tracing::Level;
 
+use crate::balancing::limits::Limits;
 use error::ApiError;
 
 /// Default request body limit: 4 MiB.
@@ -53,6 +58,35 @@ pub struct ServeArgs {
     pub request_timeout_secs: u64,
     #[command(flatten)]
     pub edge: edge::EdgeArgs,
+    /// Size limits of a session (422 `too_large` beyond them) and solve slots.
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// `fieldbal serve` size limits and solve concurrency (README, "Settings").
+#[derive(Debug, Clone, clap::Args)]
+pub struct LimitArgs {
+    /// Most correction planes in a session.
+    #[arg(long, env = "FIELDBAL_MAX_PLANES", default_value_t = Limits::DEFAULT.planes)]
+    pub max_planes: usize,
+    /// Most sensors in a session.
+    #[arg(long, env = "FIELDBAL_MAX_SENSORS", default_value_t = Limits::DEFAULT.sensors)]
+    pub max_sensors: usize,
+    /// Most speed points (speeds more than 1 % apart) in a session's reference run.
+    #[arg(long, env = "FIELDBAL_MAX_SPEED_POINTS", default_value_t = Limits::DEFAULT.speed_points)]
+    pub max_speed_points: usize,
+    /// Most runs in a session.
+    #[arg(long, env = "FIELDBAL_MAX_RUNS", default_value_t = Limits::DEFAULT.runs)]
+    pub max_runs: usize,
+    /// Most readings over all runs of a session.
+    #[arg(long, env = "FIELDBAL_MAX_READINGS", default_value_t = Limits::DEFAULT.readings)]
+    pub max_readings: usize,
+    /// Solves that run at once (default: the number of CPUs).
+    #[arg(long, env = "FIELDBAL_SOLVE_SLOTS")]
+    pub solve_slots: Option<usize>,
+    /// How long a solve waits for a free slot before 503 with Retry-After, ms.
+    #[arg(long, env = "FIELDBAL_SOLVE_QUEUE_MS", default_value_t = work::DEFAULT_SOLVE_QUEUE_MS)]
+    pub solve_queue_ms: u64,
 }
 
 /// Settings the handlers need.
@@ -71,6 +105,8 @@ pub struct AppState {
     pub(crate) db: crate::db::Db,
     /// Tokens, allowed hosts, connection limits (see `edge`).
     pub edge: Arc<edge::EdgeConfig>,
+    /// Bounded concurrency of solves (see `work`).
+    pub solves: work::Slots,
 }
 
 impl AppState {
@@ -78,6 +114,10 @@ impl AppState {
     pub fn new(pool: SqlitePool) -> Self {
         AppState {
             db: crate::db::Db::new(pool.clone()),
+            solves: work::Slots::new(
+                work::default_solve_slots(),
+                Duration::from_millis(work::DEFAULT_SOLVE_QUEUE_MS),
+            ),
             pool,
             config: Arc::new(Config {
                 body_limit_bytes: DEFAULT_BODY_LIMIT,
@@ -96,6 +136,12 @@ impl AppState {
     /// The same state with another body limit.
     pub fn with_body_limit(mut self, bytes: usize) -> Self {
         Arc::make_mut(&mut self.config).body_limit_bytes = bytes;
+        self
+    }
+
+    /// The same state with `count` solve slots, each waited for at most `wait`.
+    pub fn with_solve_slots(mut self, count: usize, wait: Duration) -> Self {
+        self.solves = work::Slots::new(count, wait);
         self
     }
 
@@ -136,7 +182,10 @@ pub fn app(state: AppState) -> Router {
             get(sessions::get).delete(sessions::delete),
         )
         .route("/api/v1/sessions/{id}/runs", post(runs::append))
-        .route("/api/v1/sessions/{id}/runs/{run_id}", put(runs::replace))
+        .route(
+            "/api/v1/sessions/{id}/runs/{run_id}",
+            put(runs::replace).get(runs::get),
+        )
         .route(
             "/api/v1/sessions/{id}/runs/{run_id}/versions",
             get(runs::versions),
@@ -191,34 +240,48 @@ pub async fn serve(
 }
 
 #[utoipa::path(get, path = "/healthz", tag = "service",
-    responses((status = 200, description = "Ready: the database answers"),
-              (status = 500, description = "The database does not answer")))]
+    responses((status = 200, description = "Ready: the database can be written"),
+              (status = 503, description = "Not ready: the database cannot be written (read-only, full disk)", body = error::ErrorBody)))]
 async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value>, ApiError> {
-    sqlx::query("SELECT 1")
-        .execute(&state.pool)
-        .await
-        .map_err(|e| ApiError::internal(&e))?;
+    crate::db::health::probe(&state.db).await.map_err(|e| {
+        tracing::error!(error = %e, "health probe: the database cannot be written");
+        ApiError::new(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "not_ready",
+            "the database cannot be written (read-only, or the disk is full)",
+        )
+    })?;
     Ok(Json(serde_json::json!({ "status": "ok" })))
 }
 
 /// Answer 408 with the contract's body when a request (a slow body, say) takes
 /// longer than the limit, so a stalled client holds no connection or shutdown
-/// forever. A store cut short is rolled back with its transaction.
+/// forever. A request cut short before any commit began stored nothing (its
+/// transaction is rolled back); one whose commit has begun is left to finish
+/// and answers its real result, so a 408 never hides a stored write.
 async fn time_limit(
     State(limit): State<Duration>,
     req: axum::extract::Request,
     next: axum::middleware::Next,
 ) -> axum::response::Response {
-    match tokio::time::timeout(limit, next.run(req)).await {
-        Ok(response) => response,
-        Err(_) => axum::response::IntoResponse::into_response(ApiError::new(
-            StatusCode::REQUEST_TIMEOUT,
-            "request_timeout",
-            format!(
-                "the request took longer than {} s; nothing was stored",
-                limit.as_secs_f64()
-            ),
-        )),
+    let watch = Arc::new(crate::db::watch::WriteWatch::default());
+    let request = crate::db::watch::watched(watch.clone(), next.run(req));
+    tokio::pin!(request);
+    tokio::select! {
+        response = &mut request => response,
+        () = tokio::time::sleep(limit) => {
+            if watch.committing() {
+                return request.await;
+            }
+            axum::response::IntoResponse::into_response(ApiError::new(
+                StatusCode::REQUEST_TIMEOUT,
+                "request_timeout",
+                format!(
+                    "the request took longer than {} s; nothing was stored",
+                    limit.as_secs_f64()
+                ),
+            ))
+        }
     }
 }
 
@@ -284,6 +347,16 @@ pub fn serve_main(args: ServeArgs) -> ExitCode {
     }
 }
 
+/// The start-up error for a database that cannot be opened or written.
+fn cannot_write(database: &str, e: &sqlx::Error) -> String {
+    let text = e.to_string();
+    if text.contains("readonly") || text.contains("read-only") {
+        format!("database {database} is read-only ({text}): fieldbal needs to write the file and its directory (for the -wal and -shm files); fix the permissions or the mount, or point --database elsewhere")
+    } else {
+        format!("database {database} cannot be opened and written: {text}")
+    }
+}
+
 async fn run(args: ServeArgs) -> Result<(), String> {
     let edge = edge::EdgeConfig::from_args(&args.edge)?;
     if edge.tokens.is_empty() {
@@ -296,13 +369,31 @@ async fn run(args: ServeArgs) -> Result<(), String> {
     }
     let pool = connect_db(&args.database)
         .await
-        .map_err(|e| format!("database {}: {e}", args.database))?;
+        .map_err(|e| cannot_write(&args.database, &e))?;
+    // Refuse to start on a database that cannot be written, rather than
+    // answer every write with an error.
+    crate::db::health::probe(&crate::db::Db::new(pool.clone()))
+        .await
+        .map_err(|e| cannot_write(&args.database, &e))?;
     let listener = tokio::net::TcpListener::bind(&args.listen)
         .await
         .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(%addr, database = %args.database, "fieldbal serve listening");
+    let l = &args.limits;
+    Limits::configure(Limits {
+        planes: l.max_planes,
+        sensors: l.max_sensors,
+        speed_points: l.max_speed_points,
+        runs: l.max_runs,
+        readings: l.max_readings,
+        ..Limits::DEFAULT
+    });
     let state = AppState::new(pool.clone())
+        .with_solve_slots(
+            l.solve_slots.unwrap_or_else(work::default_solve_slots),
+            Duration::from_millis(l.solve_queue_ms),
+        )
         .with_body_limit(args.body_limit_bytes)
         .with_request_timeout(Duration::from_secs(args.request_timeout_secs))
         .with_edge(edge);

@@ -21,6 +21,7 @@ use super::{identify, runs, sessions, solve, trial_weights};
         sessions::delete,
         runs::append,
         runs::replace,
+        runs::get,
         runs::versions,
         solve::create_solution,
         solve::list_solutions,

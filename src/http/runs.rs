@@ -1,20 +1,23 @@
 //! `/api/v1/sessions/{id}/runs`: append a run, correct one (keeping the earlier
 //! version), list a run's versions. Field paths in errors point into the posted run.
 
-use axum::extract::{Path, State};
-use axum::http::{header, StatusCode};
-use axum::response::IntoResponse;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{header, HeaderMap, StatusCode};
+use axum::response::{IntoResponse, Response};
 use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::error::{ApiError, ErrorBody};
 use super::extract::JsonBody;
+use super::headers::{self, Page};
 use super::sessions::validate_stored;
 use super::AppState;
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
-use crate::db::{self, RunVersion};
+use crate::db::idempotency::{self, Keep};
+use crate::db::{self, RunVersion, StoreError};
 
 /// The stored version of a run.
 #[derive(Debug, Serialize, Deserialize, ToSchema)]
@@ -54,7 +57,8 @@ fn encode_segment(s: &str) -> String {
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions/{id}/runs", tag = "runs",
-    params(("id" = String, Path, description = "Session id")),
+    params(("id" = String, Path, description = "Session id"),
+           ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")),
     request_body = Run,
     responses(
         (status = 201, description = "Appended as version 1", body = RunStored,
@@ -69,27 +73,48 @@ fn encode_segment(s: &str) -> String {
 pub async fn append(
     State(state): State<AppState>,
     Path(id): Path<String>,
+    request_headers: HeaderMap,
     JsonBody(run): JsonBody<Run>,
-) -> Result<impl IntoResponse, ApiError> {
-    db::runs::append(&state.db, &id, &run, &check_with_run).await?;
+) -> Result<Response, ApiError> {
+    let path = format!("/api/v1/sessions/{id}/runs");
+    let idem = headers::idempotency(&request_headers, "POST", &path, &run)?;
+    if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
+        return Ok(headers::replay(r));
+    }
     let location = format!(
         "/api/v1/sessions/{}/runs/{}",
         encode_segment(&id),
         encode_segment(&run.id)
     );
+    let stored = RunStored {
+        run_id: run.id.clone(),
+        version: 1,
+    };
+    let keep = idem.as_ref().map(|idem| Keep {
+        idem,
+        status: 201,
+        location: Some(location.clone()),
+        body: serde_json::json!(&stored),
+    });
+    match db::runs::append(&state.db, &id, &run, check_with_run, keep.as_ref()).await {
+        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+        other => other?,
+    };
     Ok((
         StatusCode::CREATED,
-        [(header::LOCATION, location)],
-        Json(RunStored {
-            run_id: run.id,
-            version: 1,
-        }),
-    ))
+        [
+            (header::LOCATION, location),
+            (header::ETAG, headers::run_etag(1)),
+        ],
+        Json(stored),
+    )
+        .into_response())
 }
 
 #[utoipa::path(put, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
     params(("id" = String, Path, description = "Session id"),
-           ("run_id" = String, Path, description = "Run id")),
+           ("run_id" = String, Path, description = "Run id"),
+           ("If-Match" = Option<String>, Header, description = "The run's ETag: refuse (412) if the run changed since")),
     request_body = Run,
     responses(
         (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored),
@@ -97,13 +122,16 @@ pub async fn append(
         (status = 404, description = "No such session or run", body = ErrorBody),
         (status = 413, description = "Body over the limit", body = ErrorBody),
         (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 412, description = "If-Match names a version that is no longer the run's current one", body = ErrorBody),
         (status = 422, description = "Invalid, or the body's id differs from the path's", body = ErrorBody),
     ))]
 pub async fn replace(
     State(state): State<AppState>,
     Path((id, run_id)): Path<(String, String)>,
+    request_headers: HeaderMap,
     JsonBody(run): JsonBody<Run>,
-) -> Result<Json<RunStored>, ApiError> {
+) -> Result<Response, ApiError> {
+    let if_match = headers::if_match_versions(&request_headers)?;
     if run.id != run_id {
         return Err(InputError::invalid(
             "id_mismatch",
@@ -115,22 +143,49 @@ pub async fn replace(
         )
         .into());
     }
-    let version = db::runs::replace(&state.db, &id, &run, &check_with_run).await?;
-    Ok(Json(RunStored { run_id, version }))
+    let version =
+        db::runs::replace(&state.db, &id, &run, check_with_run, if_match.as_deref()).await?;
+    Ok((
+        [(header::ETAG, headers::run_etag(version))],
+        Json(RunStored { run_id, version }),
+    )
+        .into_response())
+}
+
+#[utoipa::path(get, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
+    params(("id" = String, Path, description = "Session id"),
+           ("run_id" = String, Path, description = "Run id")),
+    responses(
+        (status = 200, description = "The run's current version, as it would be PUT again", body = Run,
+         headers(("ETag" = String, description = "The run's version; send it as If-Match with a PUT"))),
+        (status = 404, description = "No such session or run", body = ErrorBody),
+    ))]
+pub async fn get(
+    State(state): State<AppState>,
+    Path((id, run_id)): Path<(String, String)>,
+) -> Result<Response, ApiError> {
+    let (run, version) = db::runs::get(&state.db, &id, &run_id).await?;
+    Ok(([(header::ETAG, headers::run_etag(version))], Json(run)).into_response())
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}/runs/{run_id}/versions", tag = "runs",
     params(("id" = String, Path, description = "Session id"),
-           ("run_id" = String, Path, description = "Run id")),
+           ("run_id" = String, Path, description = "Run id"), Page),
     responses(
-        (status = 200, description = "Every version of the run, oldest first", body = Vec<RunVersion>),
+        (status = 200, description = "A page of the run's versions, oldest first (limit 1 to 1000, default 1000)", body = Vec<RunVersion>,
+         headers(("X-Total-Count" = i64, description = "Versions in all"))),
+        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
+        (status = 422, description = "limit or offset out of range", body = ErrorBody),
         (status = 404, description = "No such session or run", body = ErrorBody),
     ))]
 pub async fn versions(
     State(state): State<AppState>,
     Path((id, run_id)): Path<(String, String)>,
-) -> Result<Json<Vec<RunVersion>>, ApiError> {
-    Ok(Json(db::runs::versions(&state.db, &id, &run_id).await?))
+    page: Result<Query<Page>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let (limit, offset) = Page::bounds(page, 1000, 1000)?;
+    let (list, total) = db::runs::versions(&state.db, &id, &run_id, limit, offset).await?;
+    Ok(headers::with_total(Json(list).into_response(), total))
 }
 
 #[cfg(test)]

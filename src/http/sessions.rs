@@ -2,18 +2,21 @@
 
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::{header, StatusCode};
-use axum::response::IntoResponse;
+use axum::http::{header, HeaderMap, StatusCode};
+use axum::response::{IntoResponse, Response};
 use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use super::error::{ApiError, ErrorBody};
 use super::extract::JsonBody;
+use super::headers;
+use super::work::check_blocking;
 use super::AppState;
 use crate::balancing::model::Session;
 use crate::balancing::{self, InputError};
-use crate::db::{self, SessionList};
+use crate::db::idempotency::{self, Keep};
+use crate::db::{self, SessionList, StoreError};
 
 /// The id of a stored session (also in the `Location` header).
 #[derive(Debug, Serialize, Deserialize, ToSchema)]
@@ -48,27 +51,47 @@ pub fn validate_stored(session: &Session) -> Result<(), InputError> {
 
 #[utoipa::path(post, path = "/api/v1/sessions", tag = "sessions",
     request_body = Session,
+    params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")),
     responses(
         (status = 201, description = "Stored", body = Created,
          headers(("Location" = String, description = "/api/v1/sessions/{id}"))),
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 413, description = "Body over the limit", body = ErrorBody),
         (status = 415, description = "Not application/json", body = ErrorBody),
-        (status = 422, description = "Invalid session", body = ErrorBody),
+        (status = 422, description = "Invalid session, over the size limits (`too_large`), or an Idempotency-Key used for another request", body = ErrorBody),
+        (status = 503, description = "The database cannot be written", body = ErrorBody),
+        (status = 507, description = "The disk is full; nothing was stored", body = ErrorBody),
     ))]
 pub async fn create(
     State(state): State<AppState>,
+    request_headers: HeaderMap,
     JsonBody(session): JsonBody<Session>,
-) -> Result<impl IntoResponse, ApiError> {
-    validate_stored(&session)?;
+) -> Result<Response, ApiError> {
+    let idem = headers::idempotency(&request_headers, "POST", "/api/v1/sessions", &session)?;
+    if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
+        return Ok(headers::replay(r));
+    }
+    let readings = session.runs.iter().map(|r| r.readings.len()).sum();
+    let session = check_blocking(session, readings, validate_stored).await?;
     let id = uuid::Uuid::new_v4().to_string();
-    db::sessions::create(&state.db, &id, &session).await?;
     let location = format!("/api/v1/sessions/{id}");
+    let created = Created { id };
+    let keep = idem.as_ref().map(|idem| Keep {
+        idem,
+        status: 201,
+        location: Some(location.clone()),
+        body: serde_json::json!(&created),
+    });
+    match db::sessions::create(&state.db, &created.id, &session, keep.as_ref()).await {
+        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+        other => other?,
+    }
     Ok((
         StatusCode::CREATED,
         [(header::LOCATION, location)],
-        Json(Created { id }),
-    ))
+        Json(created),
+    )
+        .into_response())
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions", tag = "sessions",
@@ -100,14 +123,17 @@ pub async fn list(
 #[utoipa::path(get, path = "/api/v1/sessions/{id}", tag = "sessions",
     params(("id" = String, Path, description = "Session id")),
     responses(
-        (status = 200, description = "The session exactly as it would be posted again", body = Session),
+        (status = 200, description = "The session exactly as it would be posted again", body = Session,
+         headers(("ETag" = String, description = "Changes whenever the session or any of its runs changes"))),
         (status = 404, description = "No such session", body = ErrorBody),
     ))]
 pub async fn get(
     State(state): State<AppState>,
     Path(id): Path<String>,
-) -> Result<Json<Session>, ApiError> {
-    Ok(Json(db::sessions::get(&state.db, &id).await?))
+) -> Result<Response, ApiError> {
+    let session = db::sessions::get(&state.db, &id).await?;
+    let etag = headers::etag_of(&session);
+    Ok(([(header::ETAG, etag)], Json(session)).into_response())
 }
 
 #[utoipa::path(delete, path = "/api/v1/sessions/{id}", tag = "sessions",

@@ -1,15 +1,20 @@
 //! Solving: stateless `POST /api/v1/solve`, and solutions of stored sessions.
 
-use axum::extract::{Path, State};
-use axum::http::StatusCode;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{HeaderMap, StatusCode};
+use axum::response::{IntoResponse, Response};
 use axum::Json;
 
 use super::error::{ApiError, ErrorBody};
 use super::extract::{JsonBody, OptionsBody};
+use super::headers::{self, Page};
+use super::work::Refused;
 use super::AppState;
 use crate::balancing::model::{Session, SolveOptions, SolveRequest};
 use crate::balancing::{self, InputError, Solution};
-use crate::db::{self, StoredSolution};
+use crate::db::idempotency;
+use crate::db::{self, StoreError, StoredSolution};
 
 /// Name a solver error's field within the body of `POST /api/v1/solve`
 /// (`{"session", "options"}`): the core names options as `options.…` and the
@@ -31,17 +36,21 @@ fn within_options(mut e: InputError) -> InputError {
     e
 }
 
-/// Run the solver off the async workers: a large session or a min-max problem
-/// must not stall other requests. A panic in the solver becomes a 500.
-/// `name_field` puts the error's field path in terms of the posted body.
+/// Run the solver off the async workers in one of the service's solve slots
+/// (`work`): a large session or a min-max problem must not stall other
+/// requests, nor may many of them exhaust the machine. A panic in the solver
+/// becomes a 500. `name_field` puts the error's field path in terms of the
+/// posted body.
 async fn solve_blocking(
+    state: &AppState,
     session: Session,
     options: SolveOptions,
     name_field: fn(InputError) -> InputError,
-) -> Result<Solution, ApiError> {
-    tokio::task::spawn_blocking(move || balancing::solve(&session, &options))
-        .await
-        .map_err(|e| ApiError::internal(&e))?
+) -> Result<Solution, Refused> {
+    state
+        .solves
+        .solve(move || balancing::solve(&session, &options))
+        .await?
         .map_err(|e| name_field(e).into())
 }
 
@@ -52,18 +61,23 @@ async fn solve_blocking(
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 413, description = "Body over the limit", body = ErrorBody),
         (status = 415, description = "Not application/json", body = ErrorBody),
-        (status = 422, description = "Invalid or unsolvable session or options", body = ErrorBody),
+        (status = 422, description = "Invalid or unsolvable session or options, or a session over the size limits (`too_large`)", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
-pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solution>, ApiError> {
+pub async fn solve(
+    State(state): State<AppState>,
+    JsonBody(req): JsonBody<SolveRequest>,
+) -> Result<Json<Solution>, Refused> {
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
     Ok(Json(
-        solve_blocking(req.session, req.options, within_solve_request).await?,
+        solve_blocking(&state, req.session, req.options, within_solve_request).await?,
     ))
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
-    params(("id" = String, Path, description = "Session id")),
+    params(("id" = String, Path, description = "Session id"),
+           ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and options answers the first answer again and stores nothing new")),
     request_body(content = SolveOptions, description = "Solve options; an empty body means the defaults"),
     responses(
         (status = 201, description = "Solved and stored", body = StoredSolution),
@@ -72,29 +86,55 @@ pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solutio
         (status = 413, description = "Body over the limit", body = ErrorBody),
         (status = 415, description = "Not application/json", body = ErrorBody),
         (status = 422, description = "Invalid options, or the session cannot be solved yet", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn create_solution(
     State(state): State<AppState>,
     Path(id): Path<String>,
+    request_headers: HeaderMap,
     OptionsBody(options): OptionsBody,
-) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
+) -> Result<Response, Refused> {
+    let path = format!("/api/v1/sessions/{id}/solutions");
+    let idem = headers::idempotency(&request_headers, "POST", &path, &options)?;
+    if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
+        return Ok(headers::replay(r));
+    }
     let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
-    let solution = solve_blocking(session, options.clone(), within_options).await?;
-    let stored = db::solutions::store(&state.db, &id, solved, &options, &solution).await?;
-    Ok((StatusCode::CREATED, Json(stored)))
+    let solution = solve_blocking(&state, session, options.clone(), within_options).await?;
+    let stored = match db::solutions::store(
+        &state.db,
+        &id,
+        solved,
+        &options,
+        &solution,
+        idem.as_ref(),
+    )
+    .await
+    {
+        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+        other => other?,
+    };
+    Ok((StatusCode::CREATED, Json(stored)).into_response())
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
-    params(("id" = String, Path, description = "Session id")),
+    params(("id" = String, Path, description = "Session id"), Page),
     responses(
-        (status = 200, description = "Every stored solution, oldest first", body = Vec<StoredSolution>),
+        (status = 200, description = "A page of the stored solutions, oldest first (limit 1 to 100, default 20)", body = Vec<StoredSolution>,
+         headers(("X-Total-Count" = i64, description = "Solutions in all"))),
+        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
+        (status = 422, description = "limit or offset out of range", body = ErrorBody),
         (status = 404, description = "No such session", body = ErrorBody),
     ))]
 pub async fn list_solutions(
     State(state): State<AppState>,
     Path(id): Path<String>,
-) -> Result<Json<Vec<StoredSolution>>, ApiError> {
-    Ok(Json(db::solutions::list(&state.db, &id).await?))
+    page: Result<Query<Page>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    // A solution of a large session is megabytes: pages are short.
+    let (limit, offset) = Page::bounds(page, 20, 100)?;
+    let (list, total) = db::solutions::list(&state.db, &id, limit, offset).await?;
+    Ok(headers::with_total(Json(list).into_response(), total))
 }
 
 #[cfg(test)]

@@ -62,8 +62,11 @@ pub(super) fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<
             continue;
         }
         let v = v_t.row(i).adjoint();
-        pinv += &v * u.column(i).adjoint() / Complex64::from(s);
-        gram_inv += &v * v.adjoint() / Complex64::from(s * s);
+        // Multiply by real reciprocals: a complex division squares its
+        // divisor's modulus, which underflows to 0 (then NaN) for the tiny
+        // singular values of readings near 1e-100.
+        pinv += &v * u.column(i).adjoint() * Complex64::from(1.0 / s);
+        gram_inv += &v * v.adjoint() * Complex64::from((1.0 / s).powi(2));
     }
     (pinv, gram_inv)
 }

@@ -1,0 +1,138 @@
+//! Request headers of contract v2: `Idempotency-Key` on POSTs, `ETag` and
+//! `If-Match` on sessions and runs; and the paging of the shorter lists.
+
+use axum::extract::rejection::QueryRejection;
+use axum::extract::Query;
+use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::Json;
+use serde::{Deserialize, Serialize};
+use sha2::{Digest, Sha256};
+use utoipa::IntoParams;
+
+use super::error::ApiError;
+use crate::balancing::InputError;
+use crate::db::idempotency::{Idem, Replay, MAX_KEY_LEN};
+
+pub const IDEMPOTENCY_KEY: &str = "idempotency-key";
+
+/// The request's `Idempotency-Key` bound to its method, path and parsed body.
+pub fn idempotency(
+    headers: &HeaderMap,
+    method: &str,
+    path: &str,
+    body: &impl Serialize,
+) -> Result<Option<Idem>, ApiError> {
+    let Some(value) = headers.get(IDEMPOTENCY_KEY) else {
+        return Ok(None);
+    };
+    let key = value.to_str().unwrap_or("");
+    if key.is_empty() || key.len() > MAX_KEY_LEN || !key.bytes().all(|b| b.is_ascii_graphic()) {
+        return Err(InputError::invalid(
+            "invalid_header",
+            "Idempotency-Key",
+            format!("an Idempotency-Key is 1 to {MAX_KEY_LEN} visible ASCII characters"),
+        )
+        .into());
+    }
+    Ok(Some(Idem::new(key, method, path, body)))
+}
+
+/// The answer kept for a repeated key, as it was first given.
+pub fn replay(r: Replay) -> Response {
+    let status = StatusCode::from_u16(r.status).unwrap_or(StatusCode::OK);
+    let mut response = (status, Json(r.body)).into_response();
+    if let Some(location) = r.location.and_then(|l| HeaderValue::from_str(&l).ok()) {
+        response.headers_mut().insert(header::LOCATION, location);
+    }
+    response
+        .headers_mut()
+        .insert("idempotent-replayed", HeaderValue::from_static("true"));
+    response
+}
+
+/// A strong entity tag for a JSON value: its SHA-256, shortened.
+pub fn etag_of(value: &impl Serialize) -> String {
+    let digest = Sha256::digest(serde_json::to_vec(value).unwrap_or_default());
+    let hex: String = digest[..16].iter().map(|b| format!("{b:02x}")).collect();
+    format!("\"{hex}\"")
+}
+
+/// The entity tag of a run's version.
+pub fn run_etag(version: i64) -> String {
+    format!("\"v{version}\"")
+}
+
+/// The versions `If-Match` accepts: `None` without the header or with `*`
+/// (any current version), else the run versions it names; a tag that names
+/// no version matches none.
+pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiError> {
+    let Some(value) = headers.get(header::IF_MATCH) else {
+        return Ok(None);
+    };
+    let text = value.to_str().map_err(|_| {
+        ApiError::new(
+            StatusCode::BAD_REQUEST,
+            "invalid_header",
+            "If-Match is not ASCII",
+        )
+        .with_field("If-Match")
+    })?;
+    if text.trim() == "*" {
+        return Ok(None);
+    }
+    Ok(Some(
+        text.split(',')
+            .filter_map(|t| {
+                let t = t.trim().trim_start_matches("W/");
+                t.strip_prefix("\"v")?.strip_suffix('"')?.parse().ok()
+            })
+            .collect(),
+    ))
+}
+
+/// Paging of a list: `limit` 1 to `max` (default `default`), `offset` 0 or more.
+#[derive(Debug, Deserialize, IntoParams)]
+#[serde(deny_unknown_fields)]
+pub struct Page {
+    /// Items per page.
+    pub limit: Option<i64>,
+    /// Items to skip (default 0).
+    pub offset: Option<i64>,
+}
+
+impl Page {
+    /// `(limit, offset)` within the bounds, or the contract's error naming the parameter.
+    pub fn bounds(
+        params: Result<Query<Page>, QueryRejection>,
+        default: i64,
+        max: i64,
+    ) -> Result<(i64, i64), ApiError> {
+        let Query(p) = params
+            .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
+        let limit = p.limit.unwrap_or(default);
+        if !(1..=max).contains(&limit) {
+            return Err(InputError::invalid(
+                "out_of_range",
+                "limit",
+                format!("limit must be 1 to {max}"),
+            )
+            .into());
+        }
+        let offset = p.offset.unwrap_or(0);
+        if offset < 0 {
+            return Err(
+                InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
+            );
+        }
+        Ok((limit, offset))
+    }
+}
+
+/// `X-Total-Count`: how many items the paged list has in all.
+pub fn with_total(mut response: Response, total: i64) -> Response {
+    response
+        .headers_mut()
+        .insert("x-total-count", HeaderValue::from(total));
+    response
+}

@@ -30,13 +30,36 @@ pub enum Command {
         #[arg(long)]
         options: Option<PathBuf>,
     },
+    /// API 617/684 residual-unbalance check of a file (the body of
+    /// `POST /api/v1/residual-unbalance`; `-` for standard input).
+    Residual { file: PathBuf },
 }
 
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Serve(args) => crate::http::serve_main(args),
         Command::Solve { file, options } => solve_file(&file, options.as_deref()),
+        Command::Residual { file } => print_result(residual_file(&file)),
     }
+}
+
+/// Print an answer or the contract's error JSON (then exit status 2).
+fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
+    let (value, code) = match result {
+        Ok(v) => (v, ExitCode::SUCCESS),
+        Err(e) => (e.to_json(), ExitCode::from(2)),
+    };
+    println!(
+        "{}",
+        serde_json::to_string_pretty(&value).expect("JSON serialises")
+    );
+    code
+}
+
+fn residual_file(file: &std::path::Path) -> Result<serde_json::Value, InputError> {
+    let req = balancing::acceptance::parse(&read(file)?)?;
+    let check = balancing::acceptance::check(&req)?;
+    Ok(serde_json::to_value(check).expect("check serialises"))
 }
 
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {

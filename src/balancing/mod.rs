@@ -7,6 +7,7 @@
 //! complex-linear in it. The session's own conventions are applied only when
 //! values enter (`phasor`) and leave (`solution`).
 
+pub mod acceptance;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;

@@ -7,6 +7,7 @@ pub mod assets;
 pub mod error;
 pub mod extract;
 pub mod openapi;
+pub mod residual;
 pub mod runs;
 pub mod sessions;
 pub mod solve;
@@ -105,6 +106,7 @@ pub fn app(state: AppState) -> Router {
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
+        .route("/api/v1/residual-unbalance", post(residual::check))
         .route(
             "/api/v1/sessions",
             post(sessions::create).get(sessions::list),

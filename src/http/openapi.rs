@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{runs, sessions, solve};
+use super::{residual, runs, sessions, solve};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -20,6 +20,7 @@ use super::{runs, sessions, solve};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        residual::check,
         document,
     ),
     tags(
@@ -27,6 +28,7 @@ use super::{runs, sessions, solve};
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
+        (name = "acceptance", description = "Test-stand acceptance: API's residual-unbalance check"),
     )
 )]
 pub struct ApiDoc;

@@ -142,5 +142,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
     uncertainty::fill(&fit, options, noise, &mut solution);
+    // The ISO 21940-11 verdict reads the corrections' uncertainty (issue 17).
+    super::acceptance::iso::fill(session, &mut solution);
     Ok(solution)
 }

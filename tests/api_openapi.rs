@@ -27,6 +27,7 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/api/v1/sessions/{id}/runs/{run_id}/versions", "get"),
         ("/api/v1/sessions/{id}/solutions", "post"),
         ("/api/v1/sessions/{id}/solutions", "get"),
+        ("/api/v1/residual-unbalance", "post"),
     ];
     let mut listed: Vec<(String, String)> = doc["paths"]
         .as_object()

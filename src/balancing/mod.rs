@@ -11,6 +11,7 @@ pub mod acceptance;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;
+pub mod fit;
 pub mod identify;
 pub mod influence;
 pub mod model;

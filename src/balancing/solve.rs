@@ -144,5 +144,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     uncertainty::fill(&fit, options, noise, &mut solution);
     // The ISO 21940-11 verdict reads the corrections' uncertainty (issue 17).
     super::acceptance::iso::fill(session, &mut solution);
+    // Kit weights, jointly over the planes, and the static/couple parts (issue 11).
+    super::fit::fill(&fit, options, &a, &b, &mut solution)?;
     Ok(solution)
 }

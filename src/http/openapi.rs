@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{residual, runs, sessions, solve};
+use super::{residual, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -21,6 +21,7 @@ use super::{residual, runs, sessions, solve};
         solve::create_solution,
         solve::list_solutions,
         residual::check,
+        trial_weights::trial_weights,
         document,
     ),
     tags(

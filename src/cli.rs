@@ -1,4 +1,5 @@
-//! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline.
+//! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline,
+//! `fieldbal identify` identifies model coefficients offline.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -33,6 +34,24 @@ pub enum Command {
     /// API 617/684 residual-unbalance check of a file (the body of
     /// `POST /api/v1/residual-unbalance`; `-` for standard input).
     Residual { file: PathBuf },
+    /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
+    Identify {
+        #[arg(value_enum)]
+        what: IdentifyWhat,
+        /// The request JSON, as posted to `/api/v1/identify/<what>`; `-` for standard input.
+        file: PathBuf,
+    },
+}
+
+/// Which identification `fieldbal identify` runs.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum IdentifyWhat {
+    /// `identify/rotor`: one-mass rotor from a multi-speed session.
+    Rotor,
+    /// `identify/free-decay`: frequency and damping from a free decay.
+    FreeDecay,
+    /// `identify/model`: discrete-model correction.
+    Model,
 }
 
 pub fn run(cli: Cli) -> ExitCode {
@@ -40,20 +59,49 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Serve(args) => crate::http::serve_main(args),
         Command::Solve { file, options } => solve_file(&file, options.as_deref()),
         Command::Residual { file } => print_result(residual_file(&file)),
+        Command::Identify { what, file } => print_result(identify_file(what, &file)),
     }
 }
 
-/// Print an answer or the contract's error JSON (then exit status 2).
-fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
-    let (value, code) = match result {
-        Ok(v) => (v, ExitCode::SUCCESS),
-        Err(e) => (e.to_json(), ExitCode::from(2)),
+/// `fieldbal identify`: the same JSON as the endpoint.
+fn identify_file(
+    what: IdentifyWhat,
+    file: &std::path::Path,
+) -> Result<serde_json::Value, InputError> {
+    use crate::identification as id;
+    let bytes = read(file)?;
+    let value = match what {
+        IdentifyWhat::Rotor => {
+            serde_json::to_value(id::rotor::identify(&balancing::from_json(&bytes)?)?)
+        }
+        IdentifyWhat::FreeDecay => {
+            serde_json::to_value(id::decay::identify(&balancing::from_json(&bytes)?)?)
+        }
+        IdentifyWhat::Model => {
+            serde_json::to_value(id::correct::correct(&balancing::from_json(&bytes)?)?)
+        }
     };
-    println!(
-        "{}",
-        serde_json::to_string_pretty(&value).expect("JSON serialises")
-    );
-    code
+    Ok(value.expect("answers serialise"))
+}
+
+/// Print an answer (exit 0) or the contract's error body (exit 2).
+fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
+    match result {
+        Ok(v) => {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&v).expect("answer serialises")
+            );
+            ExitCode::SUCCESS
+        }
+        Err(err) => {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&err.to_json()).expect("error serialises")
+            );
+            ExitCode::from(2)
+        }
+    }
 }
 
 fn residual_file(file: &std::path::Path) -> Result<serde_json::Value, InputError> {
@@ -119,12 +167,12 @@ fn solve_file_inner(
 fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
     #[derive(serde::Deserialize)]
     struct Cases {
-        cases: Vec<balancing::identify::Case>,
+        cases: Vec<crate::identification::textbook::Case>,
     }
     let file: Cases = balancing::from_json(bytes)?;
     let mut out = Vec::with_capacity(file.cases.len());
     for (i, case) in file.cases.iter().enumerate() {
-        let estimate = balancing::identify::estimate_case(case)
+        let estimate = crate::identification::textbook::estimate_case(case)
             .map_err(|e| e.under(&format!("cases[{i}]")))?;
         out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
     }

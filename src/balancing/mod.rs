@@ -12,7 +12,6 @@ pub mod conic;
 pub mod diagnostics;
 pub mod error;
 pub mod fit;
-pub mod identify;
 pub mod influence;
 pub mod model;
 pub mod phasor;

@@ -6,6 +6,7 @@
 pub mod assets;
 pub mod error;
 pub mod extract;
+pub mod identify;
 pub mod openapi;
 pub mod residual;
 pub mod runs;
@@ -108,6 +109,9 @@ pub fn app(state: AppState) -> Router {
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
         .route("/api/v1/residual-unbalance", post(residual::check))
+        .route("/api/v1/identify/rotor", post(identify::rotor))
+        .route("/api/v1/identify/free-decay", post(identify::free_decay))
+        .route("/api/v1/identify/model", post(identify::model))
         .route("/api/v1/trial-weights", post(trial_weights::trial_weights))
         .route(
             "/api/v1/sessions",

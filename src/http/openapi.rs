@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{residual, runs, sessions, solve, trial_weights};
+use super::{identify, residual, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -21,6 +21,9 @@ use super::{residual, runs, sessions, solve, trial_weights};
         solve::create_solution,
         solve::list_solutions,
         residual::check,
+        identify::rotor,
+        identify::free_decay,
+        identify::model,
         trial_weights::trial_weights,
         document,
     ),
@@ -30,6 +33,7 @@ use super::{residual, runs, sessions, solve, trial_weights};
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
         (name = "acceptance", description = "Test-stand acceptance: API's residual-unbalance check"),
+        (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]
 pub struct ApiDoc;

@@ -31,6 +31,9 @@ pub enum Command {
         #[arg(long)]
         options: Option<PathBuf>,
     },
+    /// API 617/684 residual-unbalance check of a file (the body of
+    /// `POST /api/v1/residual-unbalance`; `-` for standard input).
+    Residual { file: PathBuf },
     /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
     Identify {
         #[arg(value_enum)]
@@ -55,6 +58,7 @@ pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Serve(args) => crate::http::serve_main(args),
         Command::Solve { file, options } => solve_file(&file, options.as_deref()),
+        Command::Residual { file } => print_result(residual_file(&file)),
         Command::Identify { what, file } => print_result(identify_file(what, &file)),
     }
 }
@@ -98,6 +102,12 @@ fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+fn residual_file(file: &std::path::Path) -> Result<serde_json::Value, InputError> {
+    let req = balancing::acceptance::parse(&read(file)?)?;
+    let check = balancing::acceptance::check(&req)?;
+    Ok(serde_json::to_value(check).expect("check serialises"))
 }
 
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {

@@ -29,6 +29,7 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/api/v1/sessions/{id}/runs/{run_id}/versions", "get"),
         ("/api/v1/sessions/{id}/solutions", "post"),
         ("/api/v1/sessions/{id}/solutions", "get"),
+        ("/api/v1/residual-unbalance", "post"),
         ("/api/v1/identify/rotor", "post"),
         ("/api/v1/identify/free-decay", "post"),
         ("/api/v1/identify/model", "post"),

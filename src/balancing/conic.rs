@@ -11,10 +11,21 @@ use num_complex::Complex64;
 
 use super::error::InputError;
 use super::model::Objective;
-use program::Problem;
 
+mod active_set;
 mod program;
 pub mod wiring;
+
+/// How min-max rows reach the cone solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Strategy {
+    /// Cones only for the rows that matter: a working set grown by the
+    /// violated rows until none is left (`active_set`). The default.
+    #[default]
+    ActiveSet,
+    /// One cone per row in a single program: the reference formulation.
+    Full,
+}
 
 /// When a cone solve gives up: a request that does not converge gets a 422,
 /// never a hang.
@@ -77,6 +88,19 @@ pub fn solve_cone_within(
     max_abs: &[Option<f64>],
     limits: Limits,
 ) -> Result<ConeSolution, InputError> {
+    solve_cone_with(a, b, objective, max_abs, limits, Strategy::default())
+}
+
+/// [`solve_cone_within`] with the min-max rows handled by `strategy`; both
+/// give the same answer to the solver's tolerance (tests/minmax_equivalence.rs).
+pub fn solve_cone_with(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    max_abs: &[Option<f64>],
+    limits: Limits,
+    strategy: Strategy,
+) -> Result<ConeSolution, InputError> {
     check_input(a, b, max_abs)?;
     let planes = a.ncols();
     // Columns the sensors do not see cannot lower any residual: their best (and
@@ -110,22 +134,22 @@ pub fn solve_cone_within(
     // gives r/β = b/β + Σ_j (A_:j d_j) y_j, unit columns and a right side of norm ~1.
     let d: Vec<f64> = a_used.column_iter().map(|c| 1.0 / c.norm()).collect();
     let n = live.len();
-    let mut scaled = Problem::new(n);
-    let col = |row: usize, k: usize| a_used[(row, k)] * d[k];
-    let rhs = |row: usize| b_used[row] / beta;
-    match objective {
-        Objective::LeastSquares => scaled.least_squares(rows, col, rhs),
-        Objective::MinMax => scaled.min_max(rows, col, rhs),
-    }
+    let a_s = DMatrix::from_fn(rows, n, |i, k| a_used[(i, k)] * d[k]);
+    let b_s = b_used.map(|z| z / beta);
     let bounds: Vec<(usize, f64)> = live
         .iter()
         .enumerate()
         .filter_map(|(k, &j)| max_abs[j].map(|m| (k, m / (beta * d[k]))))
         .collect();
-    for &(k, m) in &bounds {
-        scaled.bound(k, m);
-    }
-    let (y, iterations, status) = scaled.solve(limits)?;
+    let (y, iterations, status) = match (objective, strategy) {
+        (Objective::MinMax, Strategy::ActiveSet) => {
+            active_set::min_max(&a_s, &b_s, &bounds, limits)?
+        }
+        _ => {
+            let all: Vec<usize> = (0..rows).collect();
+            program::solve_on(&a_s, &b_s, objective, &bounds, &all, limits)?
+        }
+    };
     let mut x = DVector::zeros(planes);
     let mut bound_active = vec![false; planes];
     for (k, &j) in live.iter().enumerate() {

@@ -9,6 +9,7 @@
 
 #[macro_use]
 pub mod wire;
+pub mod acceptance;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;

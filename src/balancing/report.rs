@@ -119,6 +119,9 @@ fn iso(fit: &Fit, corrections: &[Correction]) -> Option<IsoTolerance> {
         permissible_per_plane_gmm: per_plane,
         as_found_unbalance_gmm: as_found,
         as_found_within_tolerance: within,
+        planes: None,
+        pass: None,
+        after_correction_pass: None,
     })
 }
 

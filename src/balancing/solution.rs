@@ -121,6 +121,33 @@ pub struct IsoTolerance {
     /// Whether the rotor as found was already within the tolerance in every plane.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub as_found_within_tolerance: Option<bool>,
+    /// Added (issue 17): the verdict per plane, when every solved plane has a radius.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub planes: Option<Vec<IsoPlaneVerdict>>,
+    /// Added: every plane within its permissible share as the rotor was measured.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pass: Option<bool>,
+    /// Added: every plane's 95 % bound after the correction within its share.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub after_correction_pass: Option<bool>,
+}
+
+/// ISO 21940-11 verdict for one plane (issue 17).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct IsoPlaneVerdict {
+    pub plane: String,
+    /// Residual unbalance of the rotor in the state the solve describes
+    /// (|correction| · radius), g·mm.
+    pub residual_unbalance_gmm: f64,
+    /// The plane's share of `U_per`, g·mm.
+    pub permissible_gmm: f64,
+    pub pass: bool,
+    /// 95 % upper bound of the unbalance left once the correction is fitted
+    /// (the correction's own uncertainty · radius), g·mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub after_correction_95_gmm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub after_correction_pass: Option<bool>,
 }
 
 /// A condition the technician should know about.

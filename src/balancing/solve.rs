@@ -148,6 +148,8 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
     uncertainty::fill(&fit, options, &cov, &mut solution);
+    // The ISO 21940-11 verdict reads the corrections' uncertainty (issue 17).
+    super::acceptance::iso::fill(session, &mut solution);
     // Kit weights, jointly over the planes, and the static/couple parts (issue 11).
     super::fit::fill(&fit, options, &a, &b, &mut solution)?;
     Ok(solution)

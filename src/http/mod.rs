@@ -10,6 +10,7 @@ pub mod extract;
 pub mod headers;
 pub mod identify;
 pub mod openapi;
+pub mod residual;
 pub mod runs;
 pub mod sessions;
 pub mod solve;
@@ -169,6 +170,7 @@ pub fn app(state: AppState) -> Router {
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
+        .route("/api/v1/residual-unbalance", post(residual::check))
         .route("/api/v1/identify/rotor", post(identify::rotor))
         .route("/api/v1/identify/free-decay", post(identify::free_decay))
         .route("/api/v1/identify/model", post(identify::model))

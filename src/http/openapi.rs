@@ -7,7 +7,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, RefOr};
 use utoipa::{Modify, OpenApi};
 
-use super::{identify, runs, sessions, solve, trial_weights};
+use super::{identify, residual, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -25,6 +25,7 @@ use super::{identify, runs, sessions, solve, trial_weights};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        residual::check,
         identify::rotor,
         identify::free_decay,
         identify::model,
@@ -37,6 +38,7 @@ use super::{identify, runs, sessions, solve, trial_weights};
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
         (name = "service", description = "Operations"),
+        (name = "acceptance", description = "Test-stand acceptance: API's residual-unbalance check"),
         (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]

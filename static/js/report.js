@@ -24,6 +24,21 @@ function conventionWords(c) {
   return `phase ${c.phase}, weight angles ${c.angle_direction === "with_rotation" ? "with rotation" : "against rotation"}`;
 }
 
+// The ISO 21940-11 verdict per plane (issue 17), when the solution carries one.
+function isoVerdict(sol) {
+  const iso = sol.iso_21940;
+  if (!iso || !iso.planes) return "";
+  const word = (ok) => (ok === undefined || ok === null ? "–" : ok ? "pass" : "fail");
+  return h("div", { class: "iso-verdict" },
+    h("h4", {}, `ISO 21940-11 ${iso.balance_grade}: ${word(iso.pass)} as measured, ${word(iso.after_correction_pass)} once corrected (95 %)`),
+    h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Residual, g·mm"), h("th", {}, "Permissible, g·mm"), h("th", {}, "As measured"), h("th", {}, "After correction ≤, g·mm"), h("th", {}, "Once corrected"))),
+      h("tbody", {}, iso.planes.map((v) => h("tr", { dataset: { plane: v.plane } },
+        h("td", {}, v.plane), h("td", {}, fmt(v.residual_unbalance_gmm, 0)), h("td", {}, fmt(v.permissible_gmm, 0)),
+        h("td", { class: "verdict" }, word(v.pass)),
+        h("td", {}, v.after_correction_95_gmm === undefined ? "–" : fmt(v.after_correction_95_gmm, 0)),
+        h("td", {}, word(v.after_correction_pass)))))));
+}
+
 export function renderReport(root) {
   const setup = state.setup;
   const runs = state.runs.filter((r) => r.stored);
@@ -59,6 +74,7 @@ export function renderReport(root) {
         correctionsTable(sol),
         fitTable(sol),
         summaryBox(sol),
+        isoVerdict(sol),
         residualTable(sol)) : h("p", {}, "Not solved yet."),
     ),
   );

@@ -3,15 +3,40 @@
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
 use super::Limits;
 use crate::balancing::error::InputError;
+use crate::balancing::model::Objective;
+
+/// The scaled problem `min ‖b + A y‖` (2-norm or largest entry) with
+/// `|y_k| ≤ m_k` for each `(k, m_k)` in `bounds`, on the rows `rows` of `a`, `b`.
+pub(super) fn solve_on(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    bounds: &[(usize, f64)],
+    rows: &[usize],
+    limits: Limits,
+) -> Result<(Vec<Complex64>, u32, String), InputError> {
+    let mut problem = Problem::new(a.ncols());
+    let col = |i: usize, k: usize| a[(rows[i], k)];
+    let rhs = |i: usize| b[rows[i]];
+    match objective {
+        Objective::LeastSquares => problem.least_squares(rows.len(), col, rhs),
+        Objective::MinMax => problem.min_max(rows.len(), col, rhs),
+    }
+    for &(k, m) in bounds {
+        problem.bound(k, m);
+    }
+    problem.solve(limits)
+}
 
 /// Clarabel's standard form `min ½zᵀPz + qᵀz  s.t.  b − Az ∈ K`, assembled in
 /// triplets. Variables: `[Re y (n); Im y (n); extra]`, where `extra` is `t` for
 /// min-max and the stacked real residual `w` for least squares.
-pub(super) struct Problem {
+struct Problem {
     n: usize,
     vars: usize,
     p_diag: Vec<(usize, f64)>,
@@ -24,7 +49,7 @@ pub(super) struct Problem {
 }
 
 impl Problem {
-    pub(super) fn new(n: usize) -> Self {
+    fn new(n: usize) -> Self {
         Problem {
             n,
             vars: 2 * n,
@@ -67,7 +92,7 @@ impl Problem {
 
     /// min ½‖w‖² with w = [Re r; Im r] pinned by equalities: smooth at a zero
     /// residual and never forms AᴴA (the normal equations).
-    pub(super) fn least_squares(
+    fn least_squares(
         &mut self,
         rows: usize,
         col: impl Fn(usize, usize) -> Complex64,
@@ -89,7 +114,7 @@ impl Problem {
     }
 
     /// min t with (t, Re r_a, Im r_a) in a 3-dimensional second-order cone per row.
-    pub(super) fn min_max(
+    fn min_max(
         &mut self,
         rows: usize,
         col: impl Fn(usize, usize) -> Complex64,
@@ -108,7 +133,7 @@ impl Problem {
     }
 
     /// |y_k| ≤ m as the cone (m, Re y_k, Im y_k).
-    pub(super) fn bound(&mut self, k: usize, m: f64) {
+    fn bound(&mut self, k: usize, m: f64) {
         self.push([], m);
         self.push([(k, -1.0)], 0.0);
         self.push([(self.n + k, -1.0)], 0.0);
@@ -116,7 +141,7 @@ impl Problem {
     }
 
     /// Run Clarabel; the complex solution y, iterations and status, or a 422.
-    pub(super) fn solve(self, limits: Limits) -> Result<(Vec<Complex64>, u32, String), InputError> {
+    fn solve(self, limits: Limits) -> Result<(Vec<Complex64>, u32, String), InputError> {
         let (m, nv) = (self.rhs.len(), self.vars);
         let (pi, pv): (Vec<usize>, Vec<f64>) = self.p_diag.iter().copied().unzip();
         let p = CscMatrix::new_from_triplets(nv, nv, pi.clone(), pi, pv);

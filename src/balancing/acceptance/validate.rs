@@ -1,0 +1,195 @@
+//! Checks of a residual-unbalance request: every number finite and in range,
+//! at least 4 equally spaced positions (the first may be repeated at the end),
+//! phases for every reading or for none. Each refusal names its field.
+
+use super::{ResidualRequest, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG};
+use crate::balancing::error::InputError;
+use crate::balancing::model::Conventions;
+use crate::balancing::phasor::{angle_diff_deg, weight_angle_in, wrap_deg};
+
+/// Fewest distinct positions: the amplitude fit has 3 unknowns and needs one
+/// more reading to test the fit at all.
+pub const MIN_POSITIONS: usize = 4;
+/// How far a position may be from its place on the equal spacing, degrees.
+const SPACING_TOL_DEG: f64 = 0.5;
+
+/// A checked request in the internal frame (method §1).
+#[derive(Debug, Clone)]
+pub struct Input {
+    pub conv: Conventions,
+    /// Trial unbalance, g·mm.
+    pub u_trial: f64,
+    /// Internal angle of the trial weight at each reading, radians.
+    pub phi: Vec<f64>,
+    pub amplitude: Vec<f64>,
+    /// Phases in the request's convention, degrees, when given.
+    pub phase_deg: Option<Vec<f64>>,
+    /// Distinct positions.
+    pub positions: usize,
+    pub amplitude_noise_pct: f64,
+    pub phase_noise_deg: f64,
+}
+
+fn positive(field: &str, x: f64, what: &str) -> Result<f64, InputError> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(InputError::invalid(
+            "invalid_value",
+            field,
+            format!("{what} must be a finite number greater than 0, got {x}"),
+        ))
+    }
+}
+
+fn finite(field: String, x: f64) -> Result<f64, InputError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(InputError::invalid(
+            "invalid_value",
+            field,
+            "must be a finite number",
+        ))
+    }
+}
+
+fn noise(field: &str, x: Option<f64>, default: f64, max: f64) -> Result<f64, InputError> {
+    let x = x.unwrap_or(default);
+    if x.is_finite() && x > 0.0 && x <= max {
+        Ok(x)
+    } else {
+        Err(InputError::invalid(
+            "invalid_value",
+            field,
+            format!("the repeatability must be a finite number above 0 and at most {max}, got {x}"),
+        ))
+    }
+}
+
+/// Check `req`; the first fault found is named.
+pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
+    if let Some(p) = &req.plane {
+        if p.is_empty() || p.chars().count() > 64 {
+            return Err(InputError::invalid(
+                "invalid_value",
+                "plane",
+                "a plane id has 1 to 64 characters",
+            ));
+        }
+    }
+    positive("speed_rpm", req.speed_rpm, "the speed")?;
+    positive("journal_load_kg", req.journal_load_kg, "the journal load")?;
+    let mass = positive("trial.mass_g", req.trial.mass_g, "the trial mass")?;
+    let radius = positive("trial.radius_mm", req.trial.radius_mm, "the trial radius")?;
+    let amplitude_noise_pct = noise(
+        "amplitude_noise_pct",
+        req.amplitude_noise_pct,
+        DEFAULT_AMPLITUDE_NOISE_PCT,
+        100.0,
+    )?;
+    let phase_noise_deg = noise(
+        "phase_noise_deg",
+        req.phase_noise_deg,
+        DEFAULT_PHASE_NOISE_DEG,
+        90.0,
+    )?;
+    let conv = req.conventions.unwrap_or_default();
+
+    let with_phase = req.readings.first().is_some_and(|r| r.phase_deg.is_some());
+    for (k, r) in req.readings.iter().enumerate() {
+        finite(format!("readings[{k}].angle_deg"), r.angle_deg)?;
+        let a = finite(format!("readings[{k}].amplitude"), r.amplitude)?;
+        if a < 0.0 {
+            return Err(InputError::invalid(
+                "invalid_value",
+                format!("readings[{k}].amplitude"),
+                "an amplitude is 0 or more",
+            ));
+        }
+        match r.phase_deg {
+            Some(p) => {
+                finite(format!("readings[{k}].phase_deg"), p)?;
+                if !with_phase {
+                    return Err(InputError::invalid(
+                        "mixed_phases",
+                        format!("readings[{k}].phase_deg"),
+                        "give a phase for every reading or for none (the first reading has none)",
+                    ));
+                }
+            }
+            None if with_phase => {
+                return Err(InputError::invalid(
+                    "mixed_phases",
+                    format!("readings[{k}].phase_deg"),
+                    "give a phase for every reading or for none (the first reading has one)",
+                ))
+            }
+            None => {}
+        }
+    }
+    let positions = spacing(req)?;
+    if req.readings.iter().all(|r| r.amplitude == 0.0) {
+        return Err(InputError::invalid(
+            "no_response",
+            "readings",
+            "every amplitude is 0: the trial weight moved nothing the machine could read",
+        ));
+    }
+    Ok(Input {
+        conv,
+        u_trial: mass * radius,
+        phi: req
+            .readings
+            .iter()
+            .map(|r| weight_angle_in(conv, r.angle_deg))
+            .collect(),
+        amplitude: req.readings.iter().map(|r| r.amplitude).collect(),
+        phase_deg: with_phase.then(|| {
+            req.readings
+                .iter()
+                .map(|r| r.phase_deg.unwrap_or(0.0))
+                .collect()
+        }),
+        positions,
+        amplitude_noise_pct,
+        phase_noise_deg,
+    })
+}
+
+/// The number of distinct, equally spaced positions; the last reading may
+/// repeat the first position (API's worksheet closes the polar plot so).
+fn spacing(req: &ResidualRequest) -> Result<usize, InputError> {
+    let angles: Vec<f64> = req.readings.iter().map(|r| r.angle_deg).collect();
+    let repeat =
+        angles.len() >= 2 && angle_diff_deg(angles[0], angles[angles.len() - 1]) <= SPACING_TOL_DEG;
+    let n = angles.len() - usize::from(repeat);
+    if n < MIN_POSITIONS {
+        return Err(InputError::invalid(
+            "too_few_positions",
+            "readings",
+            format!(
+                "the check needs the trial weight at {MIN_POSITIONS} or more equally spaced positions (API asks 6 or 12); {n} given"
+            ),
+        ));
+    }
+    let step = 360.0 / n as f64;
+    let mut seen = vec![false; n];
+    for (k, &a) in angles.iter().take(n).enumerate() {
+        let q = wrap_deg(a - angles[0]) / step;
+        let place = q.round();
+        let slot = (place as usize) % n;
+        if (q - place).abs() * step > SPACING_TOL_DEG || seen[slot] {
+            return Err(InputError::invalid(
+                "positions_not_equally_spaced",
+                format!("readings[{k}].angle_deg"),
+                format!(
+                    "{n} positions must be {step:.1}° apart, each once (the first may be repeated at the end); {a}° is not on that spacing from {}° or repeats a position",
+                    angles[0]
+                ),
+            ));
+        }
+        seen[slot] = true;
+    }
+    Ok(n)
+}

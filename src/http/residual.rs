@@ -1,0 +1,24 @@
+//! `POST /api/v1/residual-unbalance`: the API 617 / 684 residual-unbalance
+//! check (issue 17), stateless; the core does all of it.
+
+use axum::Json;
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::JsonBody;
+use crate::balancing::acceptance::{self, ResidualCheck, ResidualRequest};
+
+#[utoipa::path(post, path = "/api/v1/residual-unbalance", tag = "acceptance",
+    request_body = ResidualRequest,
+    responses(
+        (status = 200, description = "The exact residual unbalance, the allowable, pass/fail and API's worksheet beside it", body = ResidualCheck),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid request (fewer than 4 positions, positions not equally spaced, a value out of range), naming the field", body = ErrorBody),
+    ))]
+pub async fn check(
+    JsonBody(req): JsonBody<ResidualRequest>,
+) -> Result<Json<ResidualCheck>, ApiError> {
+    // A handful of positions: microseconds of work, no need for a blocking thread.
+    Ok(Json(acceptance::check(&req)?))
+}

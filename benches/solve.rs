@@ -90,6 +90,7 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
             })
             .collect(),
         runs,
+        runout: None,
     }
 }
 

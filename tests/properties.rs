@@ -129,6 +129,7 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
             })
             .collect(),
         runs,
+        runout: None,
     }
 }
 

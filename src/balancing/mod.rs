@@ -12,6 +12,7 @@ pub mod diagnostics;
 pub mod error;
 pub mod identify;
 pub mod influence;
+pub mod job;
 pub mod model;
 pub mod phasor;
 pub mod practical;
@@ -65,5 +66,5 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 
 /// Solve a session with options.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
-    solve::solve(session, options)
+    job::solve(session, options)
 }

@@ -6,6 +6,7 @@
 //! waits by sleeping (up to 100 ms a try), which under load gave long tails;
 //! the busy timeout remains for writers in other processes.
 
+pub mod machines;
 pub mod runs;
 pub mod sessions;
 pub mod solutions;

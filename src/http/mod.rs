@@ -6,6 +6,7 @@
 pub mod assets;
 pub mod error;
 pub mod extract;
+pub mod machines;
 pub mod openapi;
 pub mod runs;
 pub mod sessions;
@@ -122,6 +123,18 @@ pub fn app(state: AppState) -> Router {
         .route(
             "/api/v1/sessions/{id}/solutions",
             post(solve::create_solution).get(solve::list_solutions),
+        )
+        .route(
+            "/api/v1/machines",
+            post(machines::create).get(machines::list),
+        )
+        .route(
+            "/api/v1/machines/{id}",
+            get(machines::get).delete(machines::delete),
+        )
+        .route(
+            "/api/v1/machines/{id}/coefficients",
+            post(machines::pool_coefficients).get(machines::get_coefficients),
         )
         .with_state(state);
     Router::new()

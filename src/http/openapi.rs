@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{runs, sessions, solve};
+use super::{machines, runs, sessions, solve};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -20,12 +20,19 @@ use super::{runs, sessions, solve};
         runs::versions,
         solve::create_solution,
         solve::list_solutions,
+        machines::create,
+        machines::list,
+        machines::get,
+        machines::delete,
+        machines::pool_coefficients,
+        machines::get_coefficients,
         document,
     ),
     tags(
         (name = "sessions", description = "Stored balancing sessions"),
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
+        (name = "machines", description = "Machines, their sessions and stored influence coefficients"),
         (name = "service", description = "Operations"),
     )
 )]

@@ -54,11 +54,18 @@ async fn solve_blocking(
         (status = 415, description = "Not application/json", body = ErrorBody),
         (status = 422, description = "Invalid or unsolvable session or options", body = ErrorBody),
     ))]
-pub async fn solve(JsonBody(req): JsonBody<SolveRequest>) -> Result<Json<Solution>, ApiError> {
+pub async fn solve(
+    State(state): State<AppState>,
+    JsonBody(req): JsonBody<SolveRequest>,
+) -> Result<Json<Solution>, ApiError> {
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
+    // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
+    let conventions = req.session.conventions.unwrap_or_default();
+    let options =
+        super::machines::resolve(&state, conventions, req.options, within_solve_request).await?;
     Ok(Json(
-        solve_blocking(req.session, req.options, within_solve_request).await?,
+        solve_blocking(req.session, options, within_solve_request).await?,
     ))
 }
 
@@ -79,7 +86,10 @@ pub async fn create_solution(
     OptionsBody(options): OptionsBody,
 ) -> Result<(StatusCode, Json<StoredSolution>), ApiError> {
     let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
-    let solution = solve_blocking(session, options.clone(), within_options).await?;
+    let conventions = session.conventions.unwrap_or_default();
+    let resolved =
+        super::machines::resolve(&state, conventions, options.clone(), within_options).await?;
+    let solution = solve_blocking(session, resolved, within_options).await?;
     let stored = db::solutions::store(&state.db, &id, solved, &options, &solution).await?;
     Ok((StatusCode::CREATED, Json(stored)))
 }

@@ -1,4 +1,5 @@
-//! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline.
+//! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline,
+//! `fieldbal coefficients` pools session files into influence coefficients.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -30,21 +31,39 @@ pub enum Command {
         #[arg(long)]
         options: Option<PathBuf>,
     },
+    /// Pool the runs of several session files into one set of influence
+    /// coefficients (each session against its own reference run) and print them as JSON.
+    Coefficients {
+        /// Session files (as for `solve`), at least one.
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+        /// Pooling options JSON (`exclude_disagreeing`, `amplitude_noise_pct`, `phase_noise_deg`).
+        #[arg(long)]
+        options: Option<PathBuf>,
+    },
 }
 
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Serve(args) => crate::http::serve_main(args),
         Command::Solve { file, options } => solve_file(&file, options.as_deref()),
+        Command::Coefficients { files, options } => {
+            print_result(pool_files(&files, options.as_deref()))
+        }
     }
 }
 
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {
-    match solve_file_inner(file, options) {
-        Ok(solution) => {
+    print_result(solve_file_inner(file, options))
+}
+
+/// Print a result as JSON: the answer (exit 0) or the contract's error (exit 2).
+fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
+    match result {
+        Ok(answer) => {
             println!(
                 "{}",
-                serde_json::to_string_pretty(&solution).expect("solution serialises")
+                serde_json::to_string_pretty(&answer).expect("answer serialises")
             );
             ExitCode::SUCCESS
         }
@@ -106,4 +125,24 @@ fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
         out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
     }
     Ok(serde_json::json!({ "cases": out }))
+}
+
+/// `fieldbal coefficients`: the sessions' pooled coefficients (v2 "Machines"),
+/// each session named by its file path.
+fn pool_files(
+    files: &[PathBuf],
+    options: Option<&std::path::Path>,
+) -> Result<serde_json::Value, InputError> {
+    let mut sessions = Vec::with_capacity(files.len());
+    for (i, f) in files.iter().enumerate() {
+        let (session, _) = balancing::parse_session_file(&read(f)?)
+            .map_err(|e| e.under(&format!("sessions[{i}]")))?;
+        sessions.push((f.display().to_string(), session));
+    }
+    let opts = match options {
+        Some(path) => balancing::from_json(&read(path)?).map_err(|e| e.under("options"))?,
+        None => balancing::job::pool::PoolOptions::default(),
+    };
+    let pooled = balancing::job::pool::pool(&sessions, &opts)?;
+    Ok(serde_json::to_value(pooled).expect("coefficients serialise"))
 }

@@ -27,6 +27,12 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/api/v1/sessions/{id}/runs/{run_id}/versions", "get"),
         ("/api/v1/sessions/{id}/solutions", "post"),
         ("/api/v1/sessions/{id}/solutions", "get"),
+        ("/api/v1/machines", "post"),
+        ("/api/v1/machines", "get"),
+        ("/api/v1/machines/{id}", "get"),
+        ("/api/v1/machines/{id}", "delete"),
+        ("/api/v1/machines/{id}/coefficients", "post"),
+        ("/api/v1/machines/{id}/coefficients", "get"),
     ];
     let mut listed: Vec<(String, String)> = doc["paths"]
         .as_object()

@@ -80,6 +80,8 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
                 id: format!("P{j}"),
                 radius_mm: Some(150.0),
                 positions: None,
+                places_deg: None,
+                kit: None,
             })
             .collect(),
         sensors: (0..sensors)

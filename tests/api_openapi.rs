@@ -18,6 +18,7 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/healthz", "get"),
         ("/api/v1/openapi.json", "get"),
         ("/api/v1/solve", "post"),
+        ("/api/v1/trial-weights", "post"),
         ("/api/v1/sessions", "post"),
         ("/api/v1/sessions", "get"),
         ("/api/v1/sessions/{id}", "get"),

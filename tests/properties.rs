@@ -119,6 +119,8 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
                 id: format!("P{j}"),
                 radius_mm: None,
                 positions: None,
+                places_deg: None,
+                kit: None,
             })
             .collect(),
         sensors: (0..rotor.sensors)

@@ -10,6 +10,7 @@
 pub mod conic;
 pub mod diagnostics;
 pub mod error;
+pub mod fit;
 pub mod identify;
 pub mod influence;
 pub mod job;

@@ -83,6 +83,31 @@ pub struct Plane {
     /// Number of equally spaced fixed places (2 or more), place 0 at angle 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub positions: Option<u32>,
+    /// Explicit angles of the fixed places (irregular holes), in the session's
+    /// `angle_direction`, each in `[0, 360)` and distinct; instead of `positions`.
+    /// Place `p` is the `p`-th angle of this list.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub places_deg: Option<Vec<f64>>,
+    /// The weight sizes at hand for this plane (needs `positions` or `places_deg`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kit: Option<Kit>,
+}
+
+/// The weights a fitter has for a plane: any number of each size, stacked at most
+/// `max_per_place` at one place.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Kit {
+    /// The weight sizes, grams (finite, greater than 0).
+    pub masses_g: Vec<f64>,
+    /// How many weights may be stacked at one place (1 to 4).
+    pub max_per_place: u32,
+    /// How many places of the plane one fit may use (1 to 4, default 2): a
+    /// fitter splits a weight over two places, and without a bound the exact
+    /// optimum would stack dozens of small weights round the plane to hit
+    /// fractions of a gram (and the choices would be past counting).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_places: Option<u32>,
 }
 
 /// Unit of a sensor's amplitudes.
@@ -262,6 +287,14 @@ pub struct SolveOptions {
     /// A machine's stored coefficients, resolved by the service (v2).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coefficients_from: Option<CoefficientsFrom>,
+    /// Fit whole weights from each plane's kit at its fixed places, jointly
+    /// over all planes: the solution adds `fit` and `fit_summary`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub discrete: Option<bool>,
+    /// Time bound of the discrete fit's search, milliseconds (1 to 60000,
+    /// default 1000); past it the best fit found is given with `optimal: false`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit_time_limit_ms: Option<u64>,
 }
 
 /// The body of `POST /api/v1/solve`.

@@ -12,41 +12,71 @@ use super::solution::SplitPart;
 /// gets `m·cos Δ` and the split is not exact.
 pub fn split(mass_g: f64, angle_deg: f64, n: u32) -> (Vec<SplitPart>, bool) {
     let step = 360.0 / f64::from(n);
+    let places: Vec<f64> = (0..n).map(|p| f64::from(p) * step).collect();
+    split_places(mass_g, angle_deg, &places)
+}
+
+/// Split a correction of `mass_g` at `angle_deg` over the two places of
+/// `places_deg` (any order, distinct, in `[0, 360)`, place `p` at `places_deg[p]`)
+/// that enclose it, by (5.1): `m₁ = m·sin(a₂−θ)/sin(a₂−a₁)`, `m₂ = m·sin(θ−a₁)/sin(a₂−a₁)`.
+///
+/// When the enclosing gap is 180° or more (two opposite places, one place,
+/// or a wide gap), no two non-negative weights add up to the correction: the
+/// nearer place gets the component along it, `m·cos Δ` (nothing when that is
+/// negative), and the split is not exact.
+pub fn split_places(mass_g: f64, angle_deg: f64, places_deg: &[f64]) -> (Vec<SplitPart>, bool) {
     let theta = wrap_deg(angle_deg);
-    let lower = ((theta / step).floor() as u32).min(n - 1);
-    let a1 = f64::from(lower) * step;
-    let a2 = a1 + step;
-    let place = |p: u32| SplitPart {
-        position: p % n,
-        angle_deg: wrap_deg(f64::from(p % n) * step),
-        mass_g: 0.0,
+    let mut order: Vec<usize> = (0..places_deg.len()).collect();
+    order.sort_by(|&a, &b| places_deg[a].total_cmp(&places_deg[b]));
+    let part = |p: usize, m: f64| SplitPart {
+        position: p as u32,
+        angle_deg: wrap_deg(places_deg[p]),
+        mass_g: m,
     };
-    if n == 2 {
+    let Some(&first) = order.first() else {
+        return (Vec::new(), false);
+    };
+    // The last place at or below θ, and the next one round the circle.
+    let k = order.iter().rposition(|&p| places_deg[p] <= theta);
+    let (lo, a1) = match k {
+        Some(k) => (order[k], places_deg[order[k]]),
+        None => (
+            order[order.len() - 1],
+            places_deg[order[order.len() - 1]] - 360.0,
+        ),
+    };
+    let hi = match k {
+        Some(k) if k + 1 < order.len() => order[k + 1],
+        Some(_) => first,
+        None => first,
+    };
+    let mut a2 = places_deg[hi];
+    if a2 <= a1 || (order.len() == 1) {
+        a2 += 360.0;
+    }
+    let gap = a2 - a1;
+    if order.len() < 2 || gap >= 180.0 - 1e-9 {
         let (p, delta) = if theta - a1 <= a2 - theta {
-            (lower, theta - a1)
+            (lo, theta - a1)
         } else {
-            (lower + 1, a2 - theta)
+            (hi, a2 - theta)
         };
         let mass = mass_g * delta.to_radians().cos();
-        return (
-            vec![SplitPart {
-                mass_g: mass,
-                ..place(p)
-            }],
-            delta.abs() < 1e-9,
-        );
+        let parts = if mass > 0.0 {
+            vec![part(p, mass)]
+        } else {
+            Vec::new()
+        };
+        return (parts, delta.abs() < 1e-9);
     }
-    let s = step.to_radians().sin();
+    let s = gap.to_radians().sin();
     let m1 = mass_g * (a2 - theta).to_radians().sin() / s;
     let m2 = mass_g * (theta - a1).to_radians().sin() / s;
     let tiny = 1e-12 * mass_g.max(f64::MIN_POSITIVE);
-    let parts = [(lower, m1), (lower + 1, m2)]
+    let parts = [(lo, m1), (hi, m2)]
         .into_iter()
         .filter(|&(_, m)| m > tiny)
-        .map(|(p, m)| SplitPart {
-            mass_g: m,
-            ..place(p)
-        })
+        .map(|(p, m)| part(p, m))
         .collect();
     (parts, true)
 }
@@ -112,6 +142,38 @@ mod tests {
         assert!(!exact);
         assert_eq!(parts[0].position, 0);
         assert!((parts[0].mass_g - 10.0 * 30f64.to_radians().cos()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_irregular_split_adds_back_to_the_correction_vector() {
+        let places = [200.0, 10.0, 95.0, 300.0, 140.0];
+        for theta in [0.0, 5.0, 50.0, 120.0, 170.0, 250.0, 330.0, 359.5] {
+            let (parts, exact) = split_places(20.0, theta, &places);
+            assert!(exact, "{theta}");
+            assert!(parts.len() <= 2 && parts.iter().all(|p| p.mass_g > 0.0));
+            let (x, y) = parts.iter().fold((0.0, 0.0), |(x, y), p| {
+                let a = places[p.position as usize].to_radians();
+                (x + p.mass_g * a.cos(), y + p.mass_g * a.sin())
+            });
+            assert!(
+                (x - 20.0 * theta.to_radians().cos()).abs() < 1e-9,
+                "{theta}"
+            );
+            assert!(
+                (y - 20.0 * theta.to_radians().sin()).abs() < 1e-9,
+                "{theta}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_gap_of_more_than_half_a_turn_takes_only_the_component_along_the_nearer_place() {
+        let (parts, exact) = split_places(10.0, 100.0, &[0.0, 60.0]);
+        assert!(!exact);
+        assert_eq!(parts[0].position, 1);
+        assert!((parts[0].mass_g - 10.0 * 40f64.to_radians().cos()).abs() < 1e-12);
+        let (parts, _) = split_places(10.0, 240.0, &[0.0, 60.0]);
+        assert!(parts.is_empty(), "{parts:?}");
     }
 
     #[test]

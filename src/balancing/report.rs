@@ -11,7 +11,7 @@ use super::diagnostics::{
 };
 use super::model::{Objective, SolveOptions};
 use super::phasor::{reading_out, weight_out};
-use super::practical::{grade_value, permissible_unbalance_gmm, split};
+use super::practical::{grade_value, permissible_unbalance_gmm, split_places};
 use super::solution::{
     Correction, InfluenceCoefficient, IsoTolerance, PlaneDiagnostics, Residual, Solution, Summary,
     Warning,
@@ -43,14 +43,15 @@ fn corrections(fit: &Fit, warnings: &mut Vec<Warning>) -> Vec<Correction> {
         .map(|(&j, &c)| {
             let plane = &session.planes[j];
             let (mass_g, angle_deg) = weight_out(conv, c);
-            let split = plane.positions.map(|n| {
-                let (parts, exact) = split(mass_g, angle_deg, n);
+            let places = super::fit::places::place_angles_deg(plane);
+            let split = places.map(|places| {
+                let (parts, exact) = split_places(mass_g, angle_deg, &places);
                 if !exact {
                     warnings.push(warning(
                         "split_approximate",
                         Some(&plane.id),
                         format!(
-                            "plane {} has only 2 opposite places: the weight can go only along them, so part of the correction cannot be fitted; fit it at its exact angle if the plane allows",
+                            "plane {} has no two places less than 180° apart round the correction's angle (2 opposite places, or a wide gap): the weight can go only along the nearer place, so part of the correction cannot be fitted; fit it at its exact angle if the plane allows",
                             plane.id
                         ),
                     ));
@@ -208,5 +209,8 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
         from_run: None,
         run_checks: None,
         coefficients_from: None,
+        fit: None,
+        fit_summary: None,
+        static_couple: None,
     }
 }

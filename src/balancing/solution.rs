@@ -208,4 +208,69 @@ pub struct Solution {
     /// The machine and version of the stored coefficients used (v2).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coefficients_from: Option<crate::balancing::model::CoefficientsFrom>,
+    /// With `discrete: true`: the kit weights to fit, per plane, chosen jointly.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit: Option<Vec<FitPlane>>,
+    /// With `discrete: true`: the vibration those exact weights leave.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit_summary: Option<FitSummary>,
+    /// For a two-plane correction: its static and couple parts.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub static_couple: Option<StaticCouple>,
+}
+
+/// One kit weight to fit at a fixed place.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct FitWeight {
+    /// Place number: index into `places_deg`, or `p` of `positions` (place 0 at angle 0).
+    pub place: u32,
+    /// The place's angle, in the session's `angle_direction`.
+    pub angle_deg: f64,
+    /// One kit weight, grams (a place appears once per stacked weight).
+    pub mass_g: f64,
+}
+
+/// The kit weights to fit in one plane.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct FitPlane {
+    pub plane: String,
+    /// Empty when the best choice leaves the plane as it is.
+    pub weights: Vec<FitWeight>,
+}
+
+/// The predicted vibration with the fitted weights (method 3.1), over the rows used.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct FitSummary {
+    pub rms_after: f64,
+    pub max_after: f64,
+    /// Proven best among every choice the kits allow (within `max_mass_g`,
+    /// `max_per_place` and `max_places`); false when the time or node bound
+    /// stopped the search first (the fit is then the best found).
+    pub optimal: bool,
+}
+
+/// A weight as mass and angle.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct PlaneWeight {
+    pub plane: String,
+    /// Grams, at the plane's fitting radius.
+    pub mass_g: f64,
+    /// In the session's `angle_direction`.
+    pub angle_deg: f64,
+}
+
+/// The static and couple parts of a two-plane correction `C₁`, `C₂` (as
+/// vectors of grams in the session's angle convention): `static` is
+/// `(C₁ + C₂)/2`, the same weight in each plane; `couple` is `+(C₁ − C₂)/2` in
+/// the first plane and `−(C₁ − C₂)/2` in the second (equal masses, opposite
+/// angles). Static plus couple in a plane gives that plane's correction.
+/// Masses are grams as fitted: with different radii in the two planes these
+/// are parts of the weights, not of the unbalance (g·mm).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct StaticCouple {
+    /// The static part, fitted in each of the two planes.
+    #[serde(rename = "static")]
+    pub static_part: Vec<PlaneWeight>,
+    /// The couple part per plane: equal masses 180° apart.
+    pub couple: Vec<PlaneWeight>,
 }

@@ -150,5 +150,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
         None => uncertainty::fill(&fit, options, noise, &mut solution),
         Some(s) => super::job::supplied::fill(&fit, s, options, noise, &mut solution),
     }
+    // Kit weights, jointly over the planes, and the static/couple parts (issue 11).
+    super::fit::fill(&fit, options, &a, &b, &mut solution)?;
     Ok(solution)
 }

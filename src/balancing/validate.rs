@@ -237,6 +237,7 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
                 ));
             }
         }
+        super::fit::places::check_plane(i, p)?;
     }
     if session.sensors.is_empty() {
         return Err(invalid("sensors", "at least one sensor is needed"));

@@ -11,6 +11,7 @@ pub mod openapi;
 pub mod runs;
 pub mod sessions;
 pub mod solve;
+pub mod trial_weights;
 
 use std::future::Future;
 use std::process::ExitCode;
@@ -106,6 +107,7 @@ pub fn app(state: AppState) -> Router {
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
+        .route("/api/v1/trial-weights", post(trial_weights::trial_weights))
         .route(
             "/api/v1/sessions",
             post(sessions::create).get(sessions::list),

@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{machines, runs, sessions, solve};
+use super::{machines, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -26,6 +26,7 @@ use super::{machines, runs, sessions, solve};
         machines::delete,
         machines::pool_coefficients,
         machines::get_coefficients,
+        trial_weights::trial_weights,
         document,
     ),
     tags(

@@ -14,7 +14,7 @@ use crate::db::{self, StoredSolution};
 /// Name a solver error's field within the body of `POST /api/v1/solve`
 /// (`{"session", "options"}`): the core names options as `options.…` and the
 /// session's fields from its root.
-fn within_solve_request(e: InputError) -> InputError {
+pub(crate) fn within_solve_request(e: InputError) -> InputError {
     match e.field.as_deref() {
         Some(f) if f != "options" && !f.starts_with("options.") => e.under("session"),
         _ => e,

@@ -7,6 +7,19 @@ import { state, rows, readingFor } from "./state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, summaryBox, warningsBox } from "./solve.js";
 
+// The kit weights to fit, when the solution has a discrete fit (`fit`).
+function fitTable(sol) {
+  if (!sol.fit) return "";
+  const optimal = sol.fit_summary && sol.fit_summary.optimal;
+  return h("div", { class: "report-fit" },
+    h("h4", {}, "Weights to fit"),
+    h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, "Angle, °"), h("th", {}, "Mass, g"))),
+      h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
+        h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
+          h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 2) : "–")))))),
+    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}, max ${fmt(sol.fit_summary.max_after, 2)}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
+}
+
 function conventionWords(c) {
   return `phase ${c.phase}, weight angles ${c.angle_direction === "with_rotation" ? "with rotation" : "against rotation"}`;
 }
@@ -44,6 +57,7 @@ export function renderReport(root) {
         h("h3", {}, "Solution"),
         warningsBox(sol),
         correctionsTable(sol),
+        fitTable(sol),
         summaryBox(sol),
         residualTable(sol)) : h("p", {}, "Not solved yet."),
     ),

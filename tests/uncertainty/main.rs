@@ -182,6 +182,8 @@ pub fn session(
                 id: format!("P{j}"),
                 radius_mm: None,
                 positions: None,
+                places_deg: None,
+                kit: None,
             })
             .collect(),
         sensors: (0..2.min(rows))

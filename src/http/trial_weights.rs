@@ -1,0 +1,39 @@
+//! `POST /api/v1/trial-weights`: a suggested trial weight per plane, before
+//! (or instead of a repeated) trial run.
+
+use axum::Json;
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::JsonBody;
+use super::solve::within_solve_request;
+use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
+
+#[utoipa::path(post, path = "/api/v1/trial-weights", tag = "solve",
+    request_body = TrialRequest,
+    description = "A trial weight per selected plane that should move the 1X vibration by about 30 % \
+(the change field practice asks of a trial run, e.g. Acoem's 'Balancing How To #2: selecting a proper trial weight'). \
+The session may hold only its reference run.\n\n\
+basis `coefficients` (the session's own trial runs determine the influence coefficients): \
+mass m = 0.3·‖G·Y0‖/‖G·W_j‖ over the selected rows (row weights G), so the vibration moves by 30 % \
+(at least one row by 30 % or more), at the angle that lowers it most; `expected_change_pct` is that \
+change in percent for the weight given.\n\n\
+basis `rotor` (no coefficients known): the weight whose centrifugal force at service speed is 10 % of the \
+rotor's weight share on the plane, m·r·ω² = 0.10·(M/P)·g (M rotor mass, P planes of the session, \
+r the plane's radius_mm, ω from service_speed_rpm), at angle 0: the usual rule of thumb of field-balancing \
+guides, a force of about a tenth of the static bearing load, large enough to read and small enough to run safely. \
+Needs `rotor` and each plane's `radius_mm`.\n\n\
+With a kit on the plane: the stack of kit weights (at most max_per_place) at one fixed place nearest to that weight; \
+`place` and `weights` say which.",
+    responses(
+        (status = 200, description = "One suggestion per selected plane", body = TrialResponse),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 413, description = "Body over the limit", body = ErrorBody),
+        (status = 415, description = "Not application/json", body = ErrorBody),
+        (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
+    ))]
+pub async fn trial_weights(
+    JsonBody(req): JsonBody<TrialRequest>,
+) -> Result<Json<TrialResponse>, ApiError> {
+    let suggestions = suggest(&req.session, &req.options, None).map_err(within_solve_request)?;
+    Ok(Json(TrialResponse { suggestions }))
+}

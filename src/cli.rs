@@ -1,5 +1,6 @@
 //! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline,
-//! `fieldbal coefficients` pools session files into influence coefficients.
+//! `fieldbal identify` identifies model coefficients offline, `fieldbal coefficients`
+//! pools session files into influence coefficients.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -41,6 +42,24 @@ pub enum Command {
         #[arg(long)]
         options: Option<PathBuf>,
     },
+    /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
+    Identify {
+        #[arg(value_enum)]
+        what: IdentifyWhat,
+        /// The request JSON, as posted to `/api/v1/identify/<what>`; `-` for standard input.
+        file: PathBuf,
+    },
+}
+
+/// Which identification `fieldbal identify` runs.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum IdentifyWhat {
+    /// `identify/rotor`: one-mass rotor from a multi-speed session.
+    Rotor,
+    /// `identify/free-decay`: frequency and damping from a free decay.
+    FreeDecay,
+    /// `identify/model`: discrete-model correction.
+    Model,
 }
 
 pub fn run(cli: Cli) -> ExitCode {
@@ -50,20 +69,57 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Coefficients { files, options } => {
             print_result(pool_files(&files, options.as_deref()))
         }
+        Command::Identify { what, file } => print_result(identify_file(what, &file)),
+    }
+}
+
+/// `fieldbal identify`: the same JSON as the endpoint.
+fn identify_file(
+    what: IdentifyWhat,
+    file: &std::path::Path,
+) -> Result<serde_json::Value, InputError> {
+    use crate::identification as id;
+    let bytes = read(file)?;
+    let value = match what {
+        IdentifyWhat::Rotor => {
+            serde_json::to_value(id::rotor::identify(&balancing::from_json(&bytes)?)?)
+        }
+        IdentifyWhat::FreeDecay => {
+            serde_json::to_value(id::decay::identify(&balancing::from_json(&bytes)?)?)
+        }
+        IdentifyWhat::Model => {
+            serde_json::to_value(id::correct::correct(&balancing::from_json(&bytes)?)?)
+        }
+    };
+    Ok(value.expect("answers serialise"))
+}
+
+/// Print an answer (exit 0) or the contract's error body (exit 2).
+fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
+    match result {
+        Ok(v) => {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&v).expect("answer serialises")
+            );
+            ExitCode::SUCCESS
+        }
+        Err(err) => {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&err.to_json()).expect("error serialises")
+            );
+            ExitCode::from(2)
+        }
     }
 }
 
 fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {
-    print_result(solve_file_inner(file, options))
-}
-
-/// Print a result as JSON: the answer (exit 0) or the contract's error (exit 2).
-fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
-    match result {
-        Ok(answer) => {
+    match solve_file_inner(file, options) {
+        Ok(solution) => {
             println!(
                 "{}",
-                serde_json::to_string_pretty(&answer).expect("answer serialises")
+                serde_json::to_string_pretty(&solution).expect("solution serialises")
             );
             ExitCode::SUCCESS
         }
@@ -115,12 +171,12 @@ fn solve_file_inner(
 fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
     #[derive(serde::Deserialize)]
     struct Cases {
-        cases: Vec<balancing::identify::Case>,
+        cases: Vec<crate::identification::textbook::Case>,
     }
     let file: Cases = balancing::from_json(bytes)?;
     let mut out = Vec::with_capacity(file.cases.len());
     for (i, case) in file.cases.iter().enumerate() {
-        let estimate = balancing::identify::estimate_case(case)
+        let estimate = crate::identification::textbook::estimate_case(case)
             .map_err(|e| e.under(&format!("cases[{i}]")))?;
         out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
     }

@@ -34,6 +34,9 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
         ("/api/v1/machines/{id}", "delete"),
         ("/api/v1/machines/{id}/coefficients", "post"),
         ("/api/v1/machines/{id}/coefficients", "get"),
+        ("/api/v1/identify/rotor", "post"),
+        ("/api/v1/identify/free-decay", "post"),
+        ("/api/v1/identify/model", "post"),
     ];
     let mut listed: Vec<(String, String)> = doc["paths"]
         .as_object()

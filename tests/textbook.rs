@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use fieldbal::balancing::identify::{estimate_case, Case};
+use fieldbal::identification::textbook::{estimate_case, Case};
 use serde_json::Value;
 
 fn file() -> PathBuf {

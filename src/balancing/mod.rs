@@ -11,7 +11,6 @@ pub mod conic;
 pub mod diagnostics;
 pub mod error;
 pub mod fit;
-pub mod identify;
 pub mod influence;
 pub mod job;
 pub mod model;

@@ -6,6 +6,7 @@
 pub mod assets;
 pub mod error;
 pub mod extract;
+pub mod identify;
 pub mod machines;
 pub mod openapi;
 pub mod runs;
@@ -107,6 +108,9 @@ pub fn app(state: AppState) -> Router {
         .route("/healthz", get(healthz))
         .route("/api/v1/openapi.json", get(openapi::document))
         .route("/api/v1/solve", post(solve::solve))
+        .route("/api/v1/identify/rotor", post(identify::rotor))
+        .route("/api/v1/identify/free-decay", post(identify::free_decay))
+        .route("/api/v1/identify/model", post(identify::model))
         .route("/api/v1/trial-weights", post(trial_weights::trial_weights))
         .route(
             "/api/v1/sessions",

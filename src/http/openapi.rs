@@ -3,7 +3,7 @@
 use axum::Json;
 use utoipa::OpenApi;
 
-use super::{machines, runs, sessions, solve, trial_weights};
+use super::{identify, machines, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -26,6 +26,9 @@ use super::{machines, runs, sessions, solve, trial_weights};
         machines::delete,
         machines::pool_coefficients,
         machines::get_coefficients,
+        identify::rotor,
+        identify::free_decay,
+        identify::model,
         trial_weights::trial_weights,
         document,
     ),
@@ -35,6 +38,7 @@ use super::{machines, runs, sessions, solve, trial_weights};
         (name = "solve", description = "Corrections"),
         (name = "machines", description = "Machines, their sessions and stored influence coefficients"),
         (name = "service", description = "Operations"),
+        (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),
     )
 )]
 pub struct ApiDoc;

@@ -1,10 +1,11 @@
-//! Identification of a one-mass rotor from balancing data (method §6):
-//! stiffness, damping and cross-coupling by linear least squares (6.1).
+//! The textbook's worked one-mass cases (method §6, examples/textbook-regression.json):
+//! stiffness, damping and cross-coupling by linear least squares (6.1) from
+//! responses given directly, with known mass and forcing.
 
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
-use super::error::InputError;
+use crate::balancing::InputError;
 
 /// One steady response `Z = Zr + i Zi` at angular speed `w` (1/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

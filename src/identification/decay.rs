@@ -1,0 +1,249 @@
+//! Natural frequency and damping from a sampled free decay (method §7): linear
+//! discrete models built from the analytic solution, not from finite
+//! differences, with coefficients by linear least squares.
+//!
+//! - viscous damping `y'' + 2n y' + ω0² y = 0`: the exact recurrence (7.1)
+//!   `y_k = λ1 y_{k−1} + λ2 y_{k−2}`;
+//! - turbulent damping `y'' + ω0² y + μ y'|y'| = 0`: the averaged solution
+//!   `a0/(1 + λt) cos(ωt + ψ0)` and its model (7.2), linear in `(λ0, λ1, λ2)`.
+
+use nalgebra::{DMatrix, DVector};
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::lsq::{self, finite, rms};
+use crate::balancing::phasor::wrap_deg;
+use crate::balancing::InputError;
+
+/// Fewest samples the contract accepts.
+pub const MIN_SAMPLES: usize = 8;
+/// Most samples accepted (a bound on work per request).
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// The damping law of the decay.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum DampingLaw {
+    /// `b·y'`: exponential decay (7.1).
+    Viscous,
+    /// `b·y'|y'|`: the amplitude decays as `a0/(1 + λt)` (7.2).
+    Turbulent,
+}
+
+/// The body of `POST /api/v1/identify/free-decay`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FreeDecayRequest {
+    /// The decay `y_k = y(k·dt_s)`, at least 8 samples, any unit.
+    pub samples: Vec<f64>,
+    /// The constant sampling step, seconds.
+    pub dt_s: f64,
+    pub damping: DampingLaw,
+}
+
+/// The estimated oscillator `y'' + (c/m) y + (b/m) f(y') = 0`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct FreeDecay {
+    /// Undamped natural frequency `ω0/2π`.
+    pub frequency_hz: f64,
+    /// `ω0²`, 1/s².
+    pub c_over_m: f64,
+    /// Viscous: `2n` (1/s); turbulent: `μ` (1/unit of y).
+    pub b_over_m: f64,
+    /// Viscous: the logarithmic decrement `n·T_d`; turbulent: the initial
+    /// decrement `δ0 = λT` at the first sample's amplitude.
+    pub decrement: f64,
+    /// Amplitude of the fitted decay at the first sample (`a0`).
+    pub amplitude: f64,
+    /// `ψ0` of `y = a(t) cos(ωt + ψ0)`, degrees in `[0, 360)`, t = 0 at the first sample.
+    pub phase_deg: f64,
+    /// RMS of the samples minus the fitted decay, in the samples' unit.
+    pub fit_rms: f64,
+}
+
+fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
+    let n = req.samples.len();
+    if n < MIN_SAMPLES {
+        return Err(InputError::invalid(
+            "too_few_samples",
+            "samples",
+            format!("a free decay needs at least {MIN_SAMPLES} samples; got {n}"),
+        ));
+    }
+    if n > MAX_SAMPLES {
+        return Err(InputError::invalid(
+            "too_large",
+            "samples",
+            format!("at most {MAX_SAMPLES} samples; got {n}"),
+        ));
+    }
+    for (k, &y) in req.samples.iter().enumerate() {
+        finite(|| format!("samples[{k}]"), y)?;
+    }
+    finite(|| "dt_s".into(), req.dt_s)?;
+    if req.dt_s <= 0.0 {
+        return Err(InputError::invalid(
+            "invalid_value",
+            "dt_s",
+            format!(
+                "the sampling step must be greater than 0 s; got {}",
+                req.dt_s
+            ),
+        ));
+    }
+    if req.samples.iter().all(|&y| y == 0.0) {
+        return Err(InputError::invalid(
+            "invalid_value",
+            "samples",
+            "every sample is 0: there is no decay to identify",
+        ));
+    }
+    Ok(())
+}
+
+/// Identify the oscillator from its free decay.
+pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
+    check(req)?;
+    match req.damping {
+        DampingLaw::Viscous => viscous(&req.samples, req.dt_s),
+        DampingLaw::Turbulent => turbulent(&req.samples, req.dt_s),
+    }
+}
+
+/// `ωτ` from `cos(ωτ)`, or an error when the samples do not oscillate (or
+/// alias: the method needs `ωτ < π`, more than two samples per period).
+fn angle_per_step(cos: f64) -> Result<f64, InputError> {
+    if cos.is_nan() || cos.abs() >= 1.0 {
+        return Err(InputError::unsolvable(
+            "not_oscillatory",
+            "the samples do not fit a decaying oscillation sampled at least twice per period",
+        ));
+    }
+    Ok(cos.acos())
+}
+
+/// Least-squares `y_k ≈ g_k (A cos kθ + B sin kθ)` for a known envelope `g`:
+/// the amplitude `√(A²+B²)` and phase `ψ0` (A = a cos ψ0, B = −a sin ψ0).
+fn amplitude_phase(
+    y: &[f64],
+    theta: f64,
+    envelope: impl Fn(f64) -> f64,
+) -> Result<(f64, f64), InputError> {
+    let a = DMatrix::from_fn(y.len(), 2, |k, j| {
+        let kf = k as f64;
+        envelope(kf)
+            * if j == 0 {
+                (kf * theta).cos()
+            } else {
+                (kf * theta).sin()
+            }
+    });
+    let p = lsq::solve(a, &DVector::from_column_slice(y), "amplitude and phase")?;
+    Ok((p[0].hypot(p[1]), wrap_deg((-p[1]).atan2(p[0]).to_degrees())))
+}
+
+/// Viscous damping (7.1): `λ1 = 2 e^{−nτ} cos(ω_d τ)`, `λ2 = −e^{−2nτ}`.
+fn viscous(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
+    let rows = y.len() - 2;
+    let a = DMatrix::from_fn(rows, 2, |r, j| y[r + 1 - j]);
+    let b = DVector::from_iterator(rows, y[2..].iter().copied());
+    let l = lsq::solve(a, &b, "the viscous decay model (7.1)")?;
+    let ratio = -l[1];
+    if ratio.is_nan() || ratio <= 0.0 {
+        return Err(InputError::unsolvable(
+            "not_oscillatory",
+            "the samples do not fit a decaying oscillation (e^{-2nτ} came out ≤ 0)",
+        ));
+    }
+    let n = -ratio.ln() / (2.0 * tau);
+    let theta = angle_per_step(l[0] / (2.0 * ratio.sqrt()))?;
+    let wd = theta / tau;
+    let (amplitude, phase_deg) = amplitude_phase(y, theta, |k| (-n * k * tau).exp())?;
+    let psi = phase_deg.to_radians();
+    let fit_rms = rms(y.iter().enumerate().map(|(k, &yk)| {
+        let t = k as f64 * tau;
+        yk - amplitude * (-n * t).exp() * (wd * t + psi).cos()
+    }));
+    let c_over_m = wd * wd + n * n;
+    Ok(FreeDecay {
+        frequency_hz: c_over_m.sqrt() / std::f64::consts::TAU,
+        c_over_m,
+        b_over_m: 2.0 * n,
+        decrement: std::f64::consts::TAU * n / wd,
+        amplitude,
+        phase_deg,
+        fit_rms,
+    })
+}
+
+/// Turbulent damping (7.2): rows `[y_{k−1}, k y_k + (k−2) y_{k−2}, (k−1) y_{k−1}]`
+/// against `y_k + y_{k−2}`, unknowns `(λ0, λ1, λ2)`, `λ1 = −l = −λτ`.
+fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
+    let rows = y.len() - 2;
+    let a = DMatrix::from_fn(rows, 3, |r, j| {
+        let k = r + 2;
+        let kf = k as f64;
+        match j {
+            0 => y[k - 1],
+            1 => kf * y[k] + (kf - 2.0) * y[k - 2],
+            _ => (kf - 1.0) * y[k - 1],
+        }
+    });
+    let b = DVector::from_iterator(rows, (2..y.len()).map(|k| y[k] + y[k - 2]));
+    let p = lsq::solve(a, &b, "the turbulent decay model (7.2)")?;
+    let theta = angle_per_step(p[0] / 2.0)?;
+    let w = theta / tau;
+    let l = -p[1];
+    if l.is_nan() || l <= -1.0 / y.len() as f64 {
+        return Err(InputError::unsolvable(
+            "not_oscillatory",
+            "the samples do not fit a decay of the form a0/(1 + λt)",
+        ));
+    }
+    // δ0 = λT = l·2π/(ωτ); a0, ψ0 from u_k = (1 + l k) y_k = a0 cos(kωτ + ψ0).
+    let decrement = std::f64::consts::TAU * l / theta;
+    let (amplitude, phase_deg) = amplitude_phase(y, theta, |k| 1.0 / (1.0 + l * k))?;
+    let psi = phase_deg.to_radians();
+    let fit_rms = rms(y.iter().enumerate().map(|(k, &yk)| {
+        let kf = k as f64;
+        yk - amplitude * (kf * theta + psi).cos() / (1.0 + l * kf)
+    }));
+    Ok(FreeDecay {
+        frequency_hz: w / std::f64::consts::TAU,
+        c_over_m: w * w,
+        b_over_m: 3.0 * decrement / (8.0 * amplitude),
+        decrement,
+        amplitude,
+        phase_deg,
+        fit_rms,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_exact_viscous_decay_gives_back_its_parameters() {
+        let (w0, zeta, tau) = (5.0_f64, 0.03, 0.1);
+        let n = zeta * w0;
+        let wd = (w0 * w0 - n * n).sqrt();
+        let samples: Vec<f64> = (0..30)
+            .map(|k| {
+                let t = k as f64 * tau;
+                2.0 * (-n * t).exp() * (wd * t + 0.4).cos()
+            })
+            .collect();
+        let got = identify(&FreeDecayRequest {
+            samples,
+            dt_s: tau,
+            damping: DampingLaw::Viscous,
+        })
+        .unwrap();
+        assert!((got.c_over_m - w0 * w0).abs() < 1e-9 * w0 * w0);
+        assert!((got.b_over_m - 2.0 * n).abs() < 1e-9);
+        assert!((got.amplitude - 2.0).abs() < 1e-9);
+        assert!((got.phase_deg - 0.4_f64.to_degrees()).abs() < 1e-7);
+        assert!(got.fit_rms < 1e-10);
+    }
+}

@@ -1,0 +1,106 @@
+//! Linear least squares for the identification models: columns scaled to unit
+//! norm, then the SVD (never the normal equations), with a rank check so that
+//! an unidentifiable parameter is an error and not a silent minimum-norm guess.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::balancing::InputError;
+
+/// Singular values below this, relative to the largest (after column scaling),
+/// mean that the data cannot tell some parameters apart.
+const RANK_TOLERANCE: f64 = 1e-11;
+
+/// `argmin ‖A x − b‖` through the SVD of the column-scaled `A`.
+/// `what` names the model in the error when the columns are dependent.
+pub fn solve(
+    mut a: DMatrix<f64>,
+    b: &DVector<f64>,
+    what: &str,
+) -> Result<DVector<f64>, InputError> {
+    if a.nrows() < a.ncols() {
+        return Err(InputError::unsolvable(
+            "too_few_equations",
+            format!(
+                "{what}: {} unknowns need at least as many equations; there are {}",
+                a.ncols(),
+                a.nrows()
+            ),
+        ));
+    }
+    if !a.iter().chain(b.iter()).all(|x| x.is_finite()) {
+        return Err(InputError::unsolvable(
+            "not_finite",
+            format!("{what}: the data overflow the model's equations"),
+        ));
+    }
+    // Scale columns so that parameters of very different size (a stiffness of
+    // 1e5 beside a damping of 10) weigh alike in the rank decision.
+    let scale: Vec<f64> = a
+        .column_iter()
+        .map(|c| c.norm().max(f64::MIN_POSITIVE))
+        .collect();
+    for (j, mut col) in a.column_iter_mut().enumerate() {
+        col /= scale[j];
+    }
+    let svd = a.svd(true, true);
+    let smax = svd.singular_values.max();
+    let smin = svd.singular_values.min();
+    if smax == 0.0 || smin <= RANK_TOLERANCE * smax {
+        return Err(InputError::unsolvable(
+            "unidentifiable",
+            format!("{what}: the data cannot tell the parameters apart (the equations are dependent); measure at more or more different points"),
+        ));
+    }
+    let x = svd
+        .solve(b, 0.0)
+        .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
+    Ok(DVector::from_iterator(
+        x.len(),
+        x.iter().zip(&scale).map(|(v, s)| v / s),
+    ))
+}
+
+/// Root mean square of a vector's entries (0 for an empty vector).
+pub fn rms(v: impl IntoIterator<Item = f64>) -> f64 {
+    let (sum, n) = v
+        .into_iter()
+        .fold((0.0, 0usize), |(s, n), x| (s + x * x, n + 1));
+    if n == 0 {
+        0.0
+    } else {
+        (sum / n as f64).sqrt()
+    }
+}
+
+/// A finite number or an error naming `field`.
+pub fn finite(field: impl FnOnce() -> String, x: f64) -> Result<f64, InputError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(InputError::invalid(
+            "invalid_value",
+            field(),
+            "must be a finite number",
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_exact_system_of_very_different_column_sizes_is_solved_exactly() {
+        let a = DMatrix::from_row_slice(3, 2, &[1e5, 1e-3, 2e5, 3e-3, -1e5, 5e-3]);
+        let x = DVector::from_vec(vec![2.0, 7e6]);
+        let got = solve(a.clone(), &(&a * &x), "test").unwrap();
+        assert!((got - x).norm() < 1e-6);
+    }
+
+    #[test]
+    fn dependent_columns_are_an_error() {
+        let a = DMatrix::from_row_slice(3, 2, &[1.0, 2.0, 2.0, 4.0, 3.0, 6.0]);
+        let err = solve(a, &DVector::from_vec(vec![1.0, 2.0, 3.0]), "test").unwrap_err();
+        assert_eq!(err.code, "unidentifiable");
+    }
+}

@@ -1,0 +1,235 @@
+//! The one-mass rotor of method §6 fitted to steady responses over speeds:
+//! `(c − mω² + i(ωb − q)) Z = U ω²` (6.1), linear in its unknowns, by least
+//! squares through the SVD.
+//!
+//! `Z` is the displacement response to the known unbalance `D` (the trial
+//! weight), internal frame. Two generalisations of (6.1), each optional:
+//! - the mass `m` may be known or estimated;
+//! - the forcing `U` may be taken at the weight's angle (`U = D`, (6.1)
+//!   literally) or its angle (and size) estimated: a sensor at an angle from
+//!   the reference mark sees every response turned by that angle, which (6.1)
+//!   with a real `D` would read as wrong damping. With `m` and `U` both
+//!   unknown the equation is homogeneous, so it is solved per unit mass
+//!   (`m = 1`) and the mass follows from `|U| = D/m` when `D` is known.
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+use super::lsq;
+use crate::balancing::InputError;
+
+/// A response `Z` (displacement per unit of the known unbalance) at `w` (1/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    pub w: f64,
+    pub z: Complex64,
+}
+
+/// The cross-coupling `q` of (6.1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Coupling {
+    Estimated,
+    Zero,
+    /// `q = κ b ω` (the textbook's second case has κ = 0.5).
+    Tied(f64),
+}
+
+/// What is known of the model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Setup {
+    /// The (modal) mass, in the unbalance's units over the response's.
+    pub mass: Option<f64>,
+    /// `true`: `U = 1` (per unit of the known unbalance, at its angle); `false`: `U` estimated.
+    pub forcing_at_weight: bool,
+    pub coupling: Coupling,
+}
+
+impl Setup {
+    /// Number of real unknowns.
+    pub fn unknowns(&self) -> usize {
+        let q = usize::from(self.coupling == Coupling::Estimated);
+        let m = usize::from(self.mass.is_none() && self.forcing_at_weight);
+        let u = if self.forcing_at_weight { 0 } else { 2 };
+        2 + q + m + u
+    }
+}
+
+/// The fitted model; `c, b, q, m, u` share one scale, which is absolute
+/// unless both the mass and the forcing were unknown (then `m = 1`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fit {
+    pub c: f64,
+    pub b: f64,
+    /// Constant part of the cross-coupling; the total is `q + κ b ω`.
+    pub q: f64,
+    pub kappa: f64,
+    pub m: f64,
+    pub u: Complex64,
+}
+
+impl Fit {
+    /// The model's response at `w`.
+    pub fn response(&self, w: f64) -> Complex64 {
+        let q = self.q + self.kappa * self.b * w;
+        self.u * w * w / Complex64::new(self.c - self.m * w * w, w * self.b - q)
+    }
+
+    /// Undamped natural frequency `√(c/m)`, 1/s (NaN when `c/m ≤ 0`).
+    pub fn natural_w(&self) -> f64 {
+        (self.c / self.m).sqrt()
+    }
+
+    /// Damping ratio of the forward mode at the critical speed,
+    /// `(b − q(ω_n)/ω_n) / (2√(cm))`: the eigenvalue of `m s² + b s + c − i q`
+    /// to first order. Synchronous data fix `ω b − q` near the critical well
+    /// but split it into `b` and `q` poorly; this is what they fix (and what
+    /// the amplification factor reflects). With `q = 0`, `b / (2√(cm))`.
+    pub fn damping_ratio(&self) -> f64 {
+        let wn = self.natural_w();
+        let q = self.q + self.kappa * self.b * wn;
+        (self.b - q / wn) / (2.0 * (self.c * self.m).sqrt())
+    }
+}
+
+/// Least-squares fit of (6.1) stacked over `points` (real and imaginary rows).
+pub fn fit(setup: &Setup, points: &[Point]) -> Result<Fit, InputError> {
+    let kappa = match setup.coupling {
+        Coupling::Tied(k) => k,
+        _ => 0.0,
+    };
+    let i = Complex64::i();
+    // Complex columns of c Z + b(1−κ)iωZ − q iZ − m ω² Z − U ω² = 0.
+    type Column = Box<dyn Fn(&Point) -> Complex64>;
+    let mut columns: Vec<Column> = vec![
+        Box::new(|p| p.z),
+        Box::new(move |p| i * (1.0 - kappa) * p.w * p.z),
+    ];
+    if setup.coupling == Coupling::Estimated {
+        columns.push(Box::new(move |p| -i * p.z));
+    }
+    let mass_col = setup.mass.is_none() && setup.forcing_at_weight;
+    if mass_col {
+        columns.push(Box::new(|p| -p.w * p.w * p.z));
+    }
+    if !setup.forcing_at_weight {
+        columns.push(Box::new(|p| Complex64::new(-p.w * p.w, 0.0)));
+        columns.push(Box::new(move |p| -i * p.w * p.w));
+    }
+    // Known terms moved to the right-hand side; m = 1 when mass and forcing are both unknown.
+    let m_known = setup.mass.unwrap_or(1.0);
+    let rhs = |p: &Point| {
+        let mut r = if mass_col {
+            Complex64::new(0.0, 0.0)
+        } else {
+            m_known * p.w * p.w * p.z
+        };
+        if setup.forcing_at_weight {
+            r += p.w * p.w;
+        }
+        r
+    };
+    let n = points.len();
+    let mut a = DMatrix::zeros(2 * n, columns.len());
+    let mut y = DVector::zeros(2 * n);
+    for (r, p) in points.iter().enumerate() {
+        for (j, col) in columns.iter().enumerate() {
+            let v = col(p);
+            a[(2 * r, j)] = v.re;
+            a[(2 * r + 1, j)] = v.im;
+        }
+        let v = rhs(p);
+        y[2 * r] = v.re;
+        y[2 * r + 1] = v.im;
+    }
+    let x = lsq::solve(a, &y, "the one-mass model (6.1)")?;
+    let mut k = 2;
+    let mut next = || {
+        k += 1;
+        x[k - 1]
+    };
+    let q = if setup.coupling == Coupling::Estimated {
+        next()
+    } else {
+        0.0
+    };
+    let m = if mass_col { next() } else { m_known };
+    let u = if setup.forcing_at_weight {
+        Complex64::new(1.0, 0.0)
+    } else {
+        Complex64::new(next(), next())
+    };
+    Ok(Fit {
+        c: x[0],
+        b: x[1],
+        q,
+        kappa,
+        m,
+        u,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points(truth: &Fit, ws: &[f64], turn: f64) -> Vec<Point> {
+        ws.iter()
+            .map(|&w| Point {
+                w,
+                z: truth.response(w) * Complex64::from_polar(1.0, turn),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn every_setup_gives_back_an_exact_model() {
+        let truth = Fit {
+            c: 4e5,
+            b: 800.0,
+            q: 0.0,
+            kappa: 0.0,
+            m: 40.0,
+            u: Complex64::new(1.0, 0.0),
+        };
+        let ws = [60.0, 80.0, 95.0, 100.0, 105.0, 120.0, 150.0];
+        for mass in [None, Some(40.0)] {
+            for at_weight in [true, false] {
+                for coupling in [Coupling::Estimated, Coupling::Zero] {
+                    let setup = Setup {
+                        mass,
+                        forcing_at_weight: at_weight,
+                        coupling,
+                    };
+                    let f = fit(&setup, &points(&truth, &ws, 0.0)).unwrap();
+                    assert!((f.natural_w() - 100.0).abs() < 1e-8, "{setup:?}: {f:?}");
+                    assert!((f.damping_ratio() - 0.1).abs() < 1e-9, "{setup:?}: {f:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_turned_sensor_is_fitted_exactly_when_the_forcing_angle_is_estimated() {
+        let truth = Fit {
+            c: 4e5,
+            b: 800.0,
+            q: 0.0,
+            kappa: 0.0,
+            m: 40.0,
+            u: Complex64::new(1.0, 0.0),
+        };
+        let setup = Setup {
+            mass: None,
+            forcing_at_weight: false,
+            coupling: Coupling::Estimated,
+        };
+        let f = fit(
+            &setup,
+            &points(&truth, &[70.0, 90.0, 100.0, 110.0, 130.0], 0.7),
+        )
+        .unwrap();
+        assert!((f.natural_w() - 100.0).abs() < 1e-8);
+        assert!((f.damping_ratio() - 0.1).abs() < 1e-9);
+        assert!((f.u.arg() - 0.7).abs() < 1e-9 && (f.u.norm() * 40.0 - 1.0).abs() < 1e-9);
+    }
+}

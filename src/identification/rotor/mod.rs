@@ -1,0 +1,253 @@
+//! `identify/rotor`: per sensor and plane, the one-mass rotor (method §6, 6.1)
+//! fitted to a multi-speed session's influence coefficients (`Z = W·D`, the
+//! trial weight the known unbalance), with API 684's amplification factor and
+//! separation margin.
+//!
+//! Units: the model's `Z` is a displacement. Readings in `um_pp`/`mils_pp`
+//! are taken as displacement (half the peak-to-peak); velocity readings
+//! (`mm_s_rms`, `mm_s_pk`, `in_s_pk`) as the phasor of the velocity `iωZ`, and
+//! `g_pk` as that of the acceleration `−ω²Z`: the instrument's phase is the
+//! phase of the quantity it measures. Each is brought to metres before the fit,
+//! so a velocity sensor's `ω` factor cannot pass for a resonance.
+
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+mod wire;
+
+pub use wire::{
+    CrossCoupling, RotorIdentification, RotorOptions, RotorRequest, RotorResult, UnbalanceAngle,
+};
+
+use super::onemass::{self, Coupling, Point, Setup};
+use super::{api684, lsq};
+use crate::balancing::model::Unit;
+use crate::balancing::solution::Warning;
+use crate::balancing::validate::Checked;
+use crate::balancing::{influence, validate, InputError};
+
+/// Relative residual above which the fit is called poor.
+pub const POOR_FIT: f64 = 0.1;
+
+/// Metres of displacement per unit of a reading at `w` (see the module's units).
+pub fn displacement_per_unit(unit: Unit, w: f64) -> Complex64 {
+    let i = Complex64::i();
+    match unit {
+        Unit::UmPp => Complex64::new(0.5e-6, 0.0),
+        Unit::MilsPp => Complex64::new(0.5 * 25.4e-6, 0.0),
+        Unit::MmSRms => Complex64::new(std::f64::consts::SQRT_2 * 1e-3, 0.0) / (i * w),
+        Unit::MmSPk => Complex64::new(1e-3, 0.0) / (i * w),
+        Unit::InSPk => Complex64::new(0.0254, 0.0) / (i * w),
+        Unit::GPk => Complex64::new(-9.80665 / (w * w), 0.0),
+    }
+}
+
+fn indices(
+    field: &str,
+    wanted: &Option<Vec<String>>,
+    ids: &[&str],
+    what: &str,
+) -> Result<Vec<usize>, InputError> {
+    let Some(wanted) = wanted else {
+        return Ok((0..ids.len()).collect());
+    };
+    let mut out = Vec::new();
+    for (i, id) in wanted.iter().enumerate() {
+        let k = ids.iter().position(|x| x == id).ok_or_else(|| {
+            InputError::invalid(
+                if what == "plane" {
+                    "unknown_plane"
+                } else {
+                    "unknown_sensor"
+                },
+                format!("options.{field}[{i}]"),
+                format!("the session has no {what} '{id}'"),
+            )
+        })?;
+        if !out.contains(&k) {
+            out.push(k);
+        }
+    }
+    Ok(out)
+}
+
+fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputError> {
+    let range = match &o.speed_range_rpm {
+        None => None,
+        Some(r) => {
+            let ok = r.len() == 2 && r.iter().all(|x| x.is_finite() && *x > 0.0) && r[0] < r[1];
+            if !ok {
+                return Err(InputError::invalid(
+                    "invalid_value",
+                    "options.speed_range_rpm",
+                    "give [lo, hi] in rpm with 0 < lo < hi",
+                ));
+            }
+            Some((r[0], r[1]))
+        }
+    };
+    if let Some(m) = o.mass_kg {
+        if !(m.is_finite() && m > 0.0) {
+            return Err(InputError::invalid(
+                "invalid_value",
+                "options.mass_kg",
+                "a mass must be a finite number greater than 0",
+            ));
+        }
+    }
+    let coupling = match (o.cross_coupling_ratio, o.cross_coupling.unwrap_or_default()) {
+        (Some(k), _) => Coupling::Tied(lsq::finite(|| "options.cross_coupling_ratio".into(), k)?),
+        (None, CrossCoupling::Estimated) => Coupling::Estimated,
+        (None, CrossCoupling::Zero) => Coupling::Zero,
+    };
+    let setup = Setup {
+        mass: o.mass_kg,
+        forcing_at_weight: o.unbalance_angle.unwrap_or_default() == UnbalanceAngle::AtWeight,
+        coupling,
+    };
+    Ok((range, setup))
+}
+
+/// Identify the one-mass model of every selected sensor and plane.
+pub fn identify(req: &RotorRequest) -> Result<RotorIdentification, InputError> {
+    let session = &req.session;
+    let checked = validate::check(session).map_err(|e| e.under("session"))?;
+    let (range, setup) = check_options(&req.options)?;
+    let sensor_ids: Vec<&str> = session.sensors.iter().map(|s| s.id.as_str()).collect();
+    let plane_ids: Vec<&str> = session.planes.iter().map(|p| p.id.as_str()).collect();
+    let sensors = indices("sensors", &req.options.sensors, &sensor_ids, "sensor")?;
+    let planes = indices("planes", &req.options.planes, &plane_ids, "plane")?;
+    let w = influence::influence_matrix(&checked).map_err(|e| e.under("session"))?;
+    let in_range = |s: f64| range.is_none_or(|(lo, hi)| s >= lo && s <= hi);
+    let mut out = RotorIdentification {
+        results: Vec::new(),
+        warnings: Vec::new(),
+    };
+    for &s in &sensors {
+        let rows: Vec<usize> = (0..checked.rows.len())
+            .filter(|&a| checked.rows[a].sensor == s && in_range(checked.rows[a].speed_rpm))
+            .collect();
+        let needed =
+            (if setup.mass.is_some() { 2 } else { 3 }).max((setup.unknowns() + 1).div_ceil(2));
+        if rows.len() < needed {
+            let field = if range.is_some() {
+                "options.speed_range_rpm".to_string()
+            } else {
+                format!("session.runs[{}].readings", checked.runs[0])
+            };
+            return Err(InputError::invalid(
+                "too_few_speeds",
+                field,
+                format!("sensor '{}' has readings at {} speed(s){}; the one-mass model needs at least {needed}", sensor_ids[s], rows.len(), if range.is_some() { " in speed_range_rpm" } else { "" }),
+            ));
+        }
+        for &p in &planes {
+            fit_one(&checked, &w, &rows, s, p, &setup, &mut out)?;
+        }
+    }
+    Ok(out)
+}
+
+fn warn(out: &mut RotorIdentification, code: &str, plane: &str, message: String) {
+    out.warnings.push(Warning {
+        code: code.into(),
+        message,
+        plane: Some(plane.into()),
+    });
+}
+
+fn fit_one(
+    checked: &Checked,
+    w: &DMatrix<Complex64>,
+    rows: &[usize],
+    s: usize,
+    p: usize,
+    setup: &Setup,
+    out: &mut RotorIdentification,
+) -> Result<(), InputError> {
+    let session = checked.session;
+    let (sensor, plane) = (&session.sensors[s], &session.planes[p]);
+    let unit = sensor.unit;
+    // Unbalance per gram of weight, kg·m; 1 (an unknown scale) without a radius.
+    let d = plane.radius_mm.map(|r| r * 1e-6);
+    if setup.mass.is_some() && d.is_none() {
+        return Err(InputError::invalid(
+            "missing_radius",
+            format!("session.planes[{p}].radius_mm"),
+            "a known mass_kg needs the plane's radius to make the trial unbalance known",
+        ));
+    }
+    let scale = d.unwrap_or(1.0);
+    let omega = |a: usize| checked.rows[a].speed_rpm * std::f64::consts::PI / 30.0;
+    let points: Vec<Point> = rows
+        .iter()
+        .map(|&a| Point {
+            w: omega(a),
+            z: w[(a, p)] * displacement_per_unit(unit, omega(a)) / scale,
+        })
+        .collect();
+    let fit = onemass::fit(setup, &points).map_err(|e| InputError {
+        message: format!(
+            "sensor '{}', plane '{}': {}",
+            sensor.id, plane.id, e.message
+        ),
+        ..e
+    })?;
+    let label = format!("sensor '{}', plane '{}'", sensor.id, plane.id);
+    let (wn, zeta) = (fit.natural_w(), fit.damping_ratio());
+    if !(wn.is_finite() && zeta.is_finite() && zeta > 0.0 && wn > 0.0) {
+        warn(out, "no_mode", &plane.id, format!("{label}: the fit has no damped critical speed (c/m = {:.4e}, b/m = {:.4e}); the data do not show a resonance of one mode", fit.c / fit.m, fit.b / fit.m));
+        return Ok(());
+    }
+    let measured: Vec<Complex64> = rows.iter().map(|&a| w[(a, p)]).collect();
+    let fitted: Vec<Complex64> = points
+        .iter()
+        .map(|pt| fit.response(pt.w) * scale / displacement_per_unit(unit, pt.w))
+        .collect();
+    let fit_rms = lsq::rms(measured.iter().zip(&fitted).map(|(m, f)| (m - f).norm()));
+    let size = lsq::rms(measured.iter().map(|m| m.norm()));
+    let fit_rms_relative = if size > 0.0 { fit_rms / size } else { 0.0 };
+    let amp = api684::amplification(|x| fit.response(x).norm(), wn, zeta);
+    let to_rpm = 30.0 / std::f64::consts::PI;
+    let critical = wn * to_rpm;
+    let speeds: Vec<f64> = rows.iter().map(|&a| checked.rows[a].speed_rpm).collect();
+    let (lo, hi) = speeds
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
+    if fit_rms_relative > POOR_FIT {
+        warn(out, "poor_fit", &plane.id, format!("{label}: the one-mass model leaves {:.0} % of the coefficients unexplained; several modes in the speed range? Fit one at a time with speed_range_rpm", 100.0 * fit_rms_relative));
+    }
+    if critical < lo || critical > hi {
+        warn(out, "critical_outside_range", &plane.id, format!("{label}: the critical speed {critical:.0} rpm lies outside the measured {lo:.0}–{hi:.0} rpm; it is extrapolated"));
+    }
+    let service = session.rotor.as_ref().map(|r| r.service_speed_rpm);
+    let absolute = d.is_some();
+    // With mass and forcing both estimated the fit is per unit mass: |U| = D/m with D = 1 here.
+    let m_abs = if setup.mass.is_none() && !setup.forcing_at_weight {
+        1.0 / fit.u.norm()
+    } else {
+        fit.m
+    };
+    let k = m_abs / fit.m;
+    out.results.push(RotorResult {
+        sensor: sensor.id.clone(),
+        plane: plane.id.clone(),
+        critical_speed_rpm: critical,
+        damping_ratio: zeta,
+        amplification_factor: amp.factor,
+        amplification_method: amp.method.name().into(),
+        peak_speed_rpm: amp.peak_w.map(|x| x * to_rpm),
+        separation_margin_pct: service.map(|n| api684::separation_margin_pct(critical, n)),
+        required_margin_pct: service.map(|n| api684::required_margin_pct(amp.factor, critical, n)),
+        fit_rms,
+        fit_rms_relative,
+        speeds: rows.len(),
+        c_over_m: fit.c / fit.m,
+        b_over_m: fit.b / fit.m,
+        q_over_m: fit.q / fit.m,
+        mass_kg: absolute.then_some(m_abs),
+        stiffness_n_per_m: absolute.then_some(fit.c * k),
+        damping_n_s_per_m: absolute.then_some(fit.b * k),
+        cross_coupling_n_per_m: absolute.then_some(fit.q * k),
+    });
+    Ok(())
+}

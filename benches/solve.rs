@@ -117,6 +117,20 @@ fn benches(c: &mut Criterion) {
         })
     });
     group.finish();
+    // Issue 15: the largest job the limits accept (768 rows × 65 runs = 49,920
+    // readings) and a 267 × 267 one; memory is measured on the same jobs with
+    // `/usr/bin/time -v fieldbal solve benches/data/ls-*.json`.
+    let mut group = c.benchmark_group("limits");
+    group.sample_size(10);
+    let limit = job(64, 256, 3);
+    group.bench_function("solve 64 planes, 256 sensors, 3 speeds", |b| {
+        b.iter(|| solve(black_box(&limit), &options).unwrap())
+    });
+    let square = job(267, 267, 1);
+    group.bench_function("solve 267 planes, 267 sensors, 1 speed", |b| {
+        b.iter(|| solve(black_box(&square), &options).unwrap())
+    });
+    group.finish();
 }
 
 criterion_group!(core, benches);

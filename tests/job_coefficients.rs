@@ -196,7 +196,7 @@ fn two_sessions_pool_into_coefficients_that_give_the_exact_correction_within_the
             let u = c.uncertainty.as_ref().unwrap();
             let (m, a) = weight_out(conv, best[j]);
             assert!(
-                u.mass_g[0] <= m && m <= u.mass_g[1],
+                u.mass_g.unwrap()[0] <= m && m <= u.mass_g.unwrap()[1],
                 "{conv:?} {p}: {m} outside {:?}",
                 u.mass_g
             );
@@ -209,7 +209,8 @@ fn two_sessions_pool_into_coefficients_that_give_the_exact_correction_within_the
             );
             // The uncertainty is that of the coefficients: not zero, not useless.
             assert!(
-                u.mass_g[1] - u.mass_g[0] > 0.0 && u.mass_g[1] - u.mass_g[0] < 0.5 * m,
+                u.mass_g.unwrap()[1] - u.mass_g.unwrap()[0] > 0.0
+                    && u.mass_g.unwrap()[1] - u.mass_g.unwrap()[0] < 0.5 * m,
                 "{u:?}"
             );
         }

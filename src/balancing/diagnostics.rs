@@ -52,6 +52,44 @@ pub fn significance_factors(a: &DMatrix<Complex64>) -> Vec<f64> {
     factor
 }
 
+/// Relative singular value (columns at unit norm) at or below which a
+/// combination of planes moves no reading beyond rounding: those planes are
+/// undetermined (issue 12).
+pub const UNDETERMINED_TOLERANCE: f64 = 1e-9;
+
+/// Per column of `a`: whether the readings leave that plane's correction
+/// undetermined, i.e. it takes part in a combination of corrections that
+/// changes no reading (a trial that changed nothing, or two planes the
+/// sensors see identically, of which only a combination is determined).
+/// Found from the right singular vectors of the column-scaled `a`.
+pub fn undetermined_planes(a: &DMatrix<Complex64>) -> Vec<bool> {
+    let q = a.ncols();
+    let mut s = a.clone();
+    let mut out = vec![false; q];
+    for (j, mut col) in s.column_iter_mut().enumerate() {
+        let norm = col.norm();
+        if norm > 0.0 {
+            col /= Complex64::from(norm);
+        } else {
+            out[j] = true;
+        }
+    }
+    if a.nrows() < q {
+        return vec![true; q];
+    }
+    let svd = s.svd(false, true);
+    let Some(v_t) = svd.v_t else { return out };
+    let smax = svd.singular_values.max();
+    for (i, &sv) in svd.singular_values.iter().enumerate() {
+        if sv <= UNDETERMINED_TOLERANCE * smax {
+            for (j, flag) in out.iter_mut().enumerate() {
+                *flag |= v_t[(i, j)].norm() > 1e-6;
+            }
+        }
+    }
+    out
+}
+
 /// `cond(A)` after scaling the columns to unit norm: σ_max/σ_min, capped at 1e16.
 pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
     let mut s = a.clone();
@@ -124,6 +162,37 @@ mod tests {
         let f = significance_factors(&a);
         assert!(f.iter().cloned().fold(1.0, f64::min) < 0.05, "{f:?}");
         assert!(condition_number(&a) > 20.0);
+    }
+
+    #[test]
+    fn planes_the_readings_cannot_tell_apart_are_undetermined() {
+        // Column 1 moves nothing; columns 2 and 3 are the same: only their sum is determined.
+        let a = DMatrix::from_row_slice(
+            4,
+            4,
+            &[
+                c(0.0, 3.0),
+                c(0.0, 0.0),
+                c(1.0, 1.0),
+                c(1.0, 1.0),
+                c(1.0, 0.0),
+                c(0.0, 0.0),
+                c(0.5, 1.0),
+                c(0.5, 1.0),
+                c(0.2, 0.0),
+                c(0.0, 0.0),
+                c(1.0, 0.0),
+                c(1.0, 0.0),
+                c(0.0, 1.0),
+                c(0.0, 0.0),
+                c(0.0, -2.0),
+                c(0.0, -2.0),
+            ],
+        );
+        assert_eq!(undetermined_planes(&a), vec![false, true, true, true]);
+        let independent =
+            DMatrix::from_row_slice(2, 2, &[c(1.0, 0.0), c(0.0, 0.0), c(0.0, 0.0), c(0.0, 1e-6)]);
+        assert_eq!(undetermined_planes(&independent), vec![false, false]);
     }
 
     #[test]

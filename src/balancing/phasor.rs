@@ -16,7 +16,8 @@ pub fn wrap_deg(deg: f64) -> f64 {
     if w >= 360.0 {
         0.0
     } else {
-        w
+        // −0.0 (the angle of a zero correction against rotation) prints as "-0.0".
+        w + 0.0
     }
 }
 
@@ -109,6 +110,7 @@ mod tests {
     fn wrapped_angles_stay_below_360() {
         assert_eq!(wrap_deg(-1e-15), 0.0);
         assert_eq!(wrap_deg(720.0), 0.0);
+        assert!(wrap_deg(-0.0).is_sign_positive());
         assert!((wrap_deg(-90.0) - 270.0).abs() < 1e-12);
     }
 }

@@ -21,8 +21,10 @@ pub struct SplitPart {
 /// 95 % confidence region of a correction.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct Uncertainty {
-    /// 95 % interval of the mass, g.
-    pub mass_g: [f64; 2],
+    /// 95 % interval of the mass, g; absent when the readings cannot determine
+    /// this plane's correction (warning `plane_undetermined`, angle `[0, 360]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass_g: Option<[f64; 2]>,
     /// 95 % interval of the angle, degrees (the upper end may exceed 360 when it wraps).
     pub angle_deg: [f64; 2],
     /// Covariance of the correction's real and imaginary parts, g², with the

@@ -67,7 +67,9 @@ pub fn least_squares(
 /// The correction for the weighted problem, with any warnings the method adds.
 ///
 /// Extension point: the objective and mass bounds of `options` choose the
-/// method here; plain least squares is the default.
+/// method here; plain least squares is the default. (The errors-in-variables
+/// bias correction `uncertainty::bias` is not applied here yet: with the
+/// assumed default noise it also moves the answer of exact readings, issue 12.)
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
@@ -120,16 +122,20 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
         return Err(InputError::unsolvable(
             "too_few_readings",
             format!(
-                "{} correction planes need at least {} readings (sensor × speed) to balance on; {} are selected",
+                "{} correction planes need at least {} readings (sensor × speed) to balance on; {}",
                 planes.len(),
                 planes.len(),
-                selection.rows.len()
+                match selection.rows.len() {
+                    1 => "1 is selected".to_string(),
+                    n => format!("{n} are selected"),
+                }
             ),
         ));
     }
 
     let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
     let (c, warnings) = correction(&a, &b, options, session, &planes)?;
+    let cov = uncertainty::reading_covariances(&checked, noise);
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
     let residual = checked.y.column(0) + &w_used * &c;
 
@@ -147,7 +153,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
     match &supplied {
-        None => uncertainty::fill(&fit, options, noise, &mut solution),
+        None => uncertainty::fill(&fit, options, &cov, &mut solution),
         Some(s) => super::job::supplied::fill(&fit, s, options, noise, &mut solution),
     }
     // Kit weights, jointly over the planes, and the static/couple parts (issue 11).

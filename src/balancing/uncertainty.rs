@@ -18,10 +18,12 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 mod apply;
+mod bias;
 mod propagate;
 mod region;
 
-pub use apply::{fill, noise_options, Noise, SNR_THRESHOLD};
+pub use apply::{fill, noise_options, reading_covariances, Noise, SNR_THRESHOLD};
+pub use bias::bias;
 pub use propagate::{propagate, Propagation};
 pub use region::{amplitude_95, correction_uncertainty, normal_cdf, CHI2_2_95};
 

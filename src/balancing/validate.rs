@@ -364,6 +364,12 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
         .collect();
 
     // Pair readings: (point, sensor) -> reading index, per run.
+    // No chaining (issue 12): every point, all runs together, spans at most 1 %
+    // from its lowest to its highest speed. `span` starts as the reference's
+    // speeds; in session order, the first reading that would stretch it further
+    // is rejected, so a speed 1 % from another sensor's is never paired with a
+    // reading 2 % away.
+    let mut span: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[p.len() - 1])).collect();
     let mut paired: Vec<HashMap<(usize, usize), usize>> = Vec::with_capacity(runs.len());
     for &i in &runs {
         let mut map = HashMap::new();
@@ -372,6 +378,12 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
             let point = nearest_point(&points, r.speed_rpm).ok_or_else(|| {
                 InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
             })?;
+            let (lo, hi) = span[point];
+            let (lo, hi) = (lo.min(r.speed_rpm), hi.max(r.speed_rpm));
+            if hi > lo * (1.0 + SPEED_TOLERANCE) * (1.0 + 1e-12) {
+                return Err(InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("{} rpm would put readings from {lo} to {hi} rpm, more than 1 % apart, in one speed point: readings are paired only when all the speeds of a point lie within 1 % of each other", r.speed_rpm)));
+            }
+            span[point] = (lo, hi);
             let sensor = sensor_of[i][j];
             if let Some(k) = map.insert((point, sensor), j) {
                 return Err(InputError::invalid(

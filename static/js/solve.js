@@ -26,6 +26,8 @@ export function uncertaintyText(c) {
 function uncertaintyParts(c) {
   const u = c.uncertainty;
   if (!u) return [];
+  // No mass interval: the readings cannot determine this plane (plane_undetermined).
+  if (!u.mass_g) return [`${fmt(c.mass_g, 1)} g (undetermined)`, "angle undetermined"];
   // A 95 % region around zero (the service gives the angle as [0, 360]): the
   // noise could account for the whole correction, so no angle can be trusted.
   if (u.angle_deg[1] - u.angle_deg[0] >= 359.999) {

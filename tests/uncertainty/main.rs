@@ -5,8 +5,11 @@
 //! invalid noise options. This file holds the generated rotor and sessions.
 
 mod calibration;
+mod eiv;
 mod linearisation;
 mod noise_options;
+mod rotor_model;
+mod undetermined;
 
 use fieldbal::balancing::model::{
     AngleDirection, Conventions, PhaseConvention, Plane, Reading, Run, Sample, Sensor, Session,

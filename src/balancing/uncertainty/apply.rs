@@ -9,11 +9,13 @@ use super::{
     amplitude_95, correction_uncertainty, propagate, reading_noise, DEFAULT_AMPLITUDE_NOISE_PCT,
     DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
 };
+use crate::balancing::diagnostics::undetermined_planes;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::phasor::reading_in;
 use crate::balancing::solution::{Solution, Warning};
-use crate::balancing::solve::Fit;
+use crate::balancing::solve::{weighted_problem, Fit};
+use crate::balancing::validate::Checked;
 
 /// A trial effect below this many standard deviations of its noise at every
 /// used row cannot be told from noise (the complex error exceeds 3σ with
@@ -67,8 +69,7 @@ pub fn noise_options(options: &SolveOptions) -> Result<Noise, InputError> {
 }
 
 /// Covariance of every reading, `[row][run]`, internal frame.
-fn reading_covariances(fit: &Fit, noise: Noise) -> Vec<Vec<Matrix2<f64>>> {
-    let checked = &fit.checked;
+pub fn reading_covariances(checked: &Checked, noise: Noise) -> Vec<Vec<Matrix2<f64>>> {
     let conv = checked.conventions;
     (0..checked.rows.len())
         .map(|a| {
@@ -101,28 +102,45 @@ fn reading_covariances(fit: &Fit, noise: Noise) -> Vec<Vec<Matrix2<f64>>> {
 /// which rows or bounds are active, and jumps when they change); a binding bound
 /// in truth narrows the mass interval. The solution then carries the warning
 /// `uncertainty_approximate` saying so.
-pub fn fill(fit: &Fit, options: &SolveOptions, noise: Noise, solution: &mut Solution) {
+pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], solution: &mut Solution) {
     let checked = &fit.checked;
     let conv = checked.conventions;
-    let cov = reading_covariances(fit, noise);
     let sel = &fit.selection;
     let prop = propagate(
         &checked.t,
         &checked.y,
-        &cov,
+        cov,
         &sel.rows,
         &sel.weights,
         &fit.planes,
         &fit.c,
     );
 
-    for ((corr, &c), cc) in solution
+    let (a, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
+    let undetermined = undetermined_planes(&a);
+    for (((corr, &c), cc), &lost) in solution
         .corrections
         .iter_mut()
         .zip(fit.c.iter())
         .zip(&prop.correction)
+        .zip(&undetermined)
     {
-        corr.uncertainty = Some(correction_uncertainty(c, cc, conv));
+        let mut u = correction_uncertainty(c, cc, conv);
+        if lost {
+            // Any mass fits the readings as well along the undetermined
+            // combination: no interval can be given (issue 12).
+            u.mass_g = None;
+            u.angle_deg = [0.0, 360.0];
+            solution.warnings.push(Warning {
+                code: "plane_undetermined".into(),
+                message: format!(
+                    "the readings cannot determine the correction in plane {0}: its trial weight changed no reading, or the sensors see it exactly as a combination of other planes, so only that combination is known and the {1:.3} g shown is one of many equally good answers. Repeat the trial run in {0} with a heavier weight or at a larger radius, add a sensor or speed that sees {0} differently, or solve without it (options.planes)",
+                    corr.plane, corr.mass_g
+                ),
+                plane: Some(corr.plane.clone()),
+            });
+        }
+        corr.uncertainty = Some(u);
     }
     for ((res, &r), rc) in solution
         .predicted_residual

@@ -4,9 +4,9 @@
 //!
 //! Every reading is an independent complex quantity with a real 2×2 covariance.
 //! The chain is real-linear but not complex-linear in the readings (the least-
-//! squares derivative contains `dWᴴ`), so each reading is perturbed along 1 and
-//! along i, giving the real 2×2 Jacobian block of every output; the output
-//! covariance is `Σ_readings J Σ_reading Jᵀ`.
+//! squares derivative contains `dWᴴ`): each reading `δ` moves an output by
+//! `α δ + β δ̄`, and the output's real covariance follows from the complex
+//! covariance and pseudo-covariance (`E[z zᴴ]`, `E[z zᵀ]`) summed over readings.
 
 use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
@@ -45,7 +45,7 @@ pub struct Propagation {
 }
 
 /// `(A⁺, (AᴴA)⁺)` from the SVD of `A`, never forming `AᴴA` itself.
-fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
+pub(super) fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
     let (m, q) = a.shape();
     let mut pinv = DMatrix::zeros(q, m);
     let mut gram_inv = DMatrix::zeros(q, q);
@@ -68,21 +68,37 @@ fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<Complex64>)
     (pinv, gram_inv)
 }
 
-/// Real 2×2 matrix of the real-linear map `δ ↦ α δ + β δ̄` on (Re δ, Im δ).
-fn real_map(alpha: Complex64, beta: Complex64) -> Matrix2<f64> {
-    Matrix2::new(
-        alpha.re + beta.re,
-        beta.im - alpha.im,
-        alpha.im + beta.im,
-        alpha.re - beta.re,
+/// Second moments of a complex error `z`: `k = E[z z̄]` and the pseudo-
+/// covariance `p = E[z²]`; for a vector, `K = E[z zᴴ]` and `J = E[z zᵀ]`.
+/// Together they are the real covariance of (Re z, Im z) (see [`real_cov`]),
+/// and for `dC = α δ + β δ̄` they sum over independent readings without ever
+/// forming a per-reading Jacobian.
+pub(super) fn moments(cov: &Matrix2<f64>) -> (f64, Complex64) {
+    (
+        cov[(0, 0)] + cov[(1, 1)],
+        Complex64::new(cov[(0, 0)] - cov[(1, 1)], cov[(0, 1)] + cov[(1, 0)]),
     )
 }
 
-/// A square root `S` of a covariance, `S Sᵀ = Σ` (negative eigenvalues clipped).
-fn sqrt_psd(cov: &Matrix2<f64>) -> Matrix2<f64> {
-    let e = nalgebra::SymmetricEigen::new((cov + cov.transpose()) / 2.0);
-    let d = e.eigenvalues.map(|l| l.max(0.0).sqrt());
-    e.eigenvectors * Matrix2::from_diagonal(&d)
+/// The real 2×2 covariance of (Re z, Im z) from `k = E|z|²` and `p = E[z²]`.
+fn real_cov(k: f64, p: Complex64) -> Matrix2<f64> {
+    Matrix2::new((k + p.re) / 2.0, p.im / 2.0, p.im / 2.0, (k - p.re) / 2.0)
+}
+
+/// The real `2q × 2q` covariance, ordered (Re z₀, Im z₀, Re z₁, …), from
+/// `K = E[z zᴴ]` and `J = E[z zᵀ]`: `E[x_j x_l] = Re(K+J)/2`,
+/// `E[y_j y_l] = Re(K−J)/2`, `E[x_j y_l] = Im(J−K)/2`, `E[y_j x_l] = Im(J+K)/2`.
+fn real_cov_full(k: &DMatrix<Complex64>, j: &DMatrix<Complex64>) -> DMatrix<f64> {
+    let q = k.nrows();
+    DMatrix::from_fn(2 * q, 2 * q, |r, c| {
+        let (kk, jj) = (k[(r / 2, c / 2)], j[(r / 2, c / 2)]);
+        match (r % 2, c % 2) {
+            (0, 0) => (kk.re + jj.re) / 2.0,
+            (1, 1) => (kk.re - jj.re) / 2.0,
+            (0, _) => (jj.im - kk.im) / 2.0,
+            _ => (jj.im + kk.im) / 2.0,
+        }
+    })
 }
 
 /// Propagate reading noise to the correction and the residual.
@@ -101,8 +117,14 @@ fn sqrt_psd(cov: &Matrix2<f64>) -> Matrix2<f64> {
 /// A reading `(a, k)` moves only row `a` of `W`, by `δ ω_k` with `ω_0 = −1ᵀT⁺`
 /// and `ω_k = T⁺[k−1, :]`, so `dC = α δ + β δ̄` with
 /// `α = −g λ_k A⁺[:, i]`, `β = −g r_i (AᴴA)⁻¹ ω̄_k`, where `λ_k = ω_k·C (+1 for
-/// k = 0)` is also the reading's direct effect on `R_a`. That makes the cost
-/// `O(readings · planes + rows · planes²)`.
+/// k = 0)` is also the reading's direct effect on `R_a`. The covariances are
+/// summed in complex form (`E[dC dCᴴ]`, `E[dC dCᵀ]`) as a few matrix products,
+/// so time is `O(rows · runs · planes + rows · planes²)` and memory
+/// `O(rows · (runs + planes))`.
+///
+/// Extension point: a covariance of supplied influence coefficients (not
+/// estimated from these readings) adds its own term to `K`, `J` below (`dC`
+/// from `dW` is `−A⁺ G dW C − (AᴴA)⁻¹ G dWᴴ r`) before they become real.
 ///
 /// For a solution that is not the least-squares one (min-max, active mass
 /// bounds), this is the derivative of the least-squares solution taken at `c`:
@@ -163,33 +185,86 @@ pub fn propagate(
         .map(|o| &gram_inv * o.map(|x| x.conj()))
         .collect();
 
-    // Whitened Jacobian of C: for reading (a, k) with Σ = S Sᵀ, the 2q × 2 block
-    // J S; then Cov(C) = M Mᵀ. Only used rows move C.
-    let jc = |i: usize, k: usize, sq: &Matrix2<f64>| -> DMatrix<f64> {
-        let g = row_weights[i];
-        let mut m = DMatrix::zeros(2 * q, 2);
-        for j in 0..q {
-            let alpha = -apinv[(j, i)] * lambda[k] * g;
-            let beta = -g_omega[k][j] * r[i] * g;
-            m.fixed_view_mut::<2, 2>(2 * j, 0)
-                .copy_from(&(real_map(alpha, beta) * sq));
-        }
-        m
-    };
-    let roots: Vec<Vec<Matrix2<f64>>> = cov
+    // Per reading (a, k) at used position i: dC = α δ + β δ̄ with α = λ_k a_i,
+    // a_i = −g A⁺[:, i], and β = b_i ξ_k, b_i = −g r_i, ξ_k = (AᴴA)⁻¹ ω̄_k. With
+    // s = E|δ|², p = E[δ²] of the reading, summed over independent readings:
+    //   K = Σ s(|λ|² a aᴴ + |b|² ξ ξᴴ) + (p λ b̄ a ξᴴ + its adjoint),
+    //   J = Σ p λ² a aᵀ + p̄ b² ξ ξᵀ + s λ b (a ξᵀ + ξ aᵀ),
+    // each a product of a q × rows, a rows × runs and a runs × q matrix: time
+    // O(rows·runs·q + rows·q²) and memory O(rows·(runs + q)), never a
+    // Jacobian per reading (issue 15).
+    let m = used_rows.len();
+    let mom: Vec<Vec<(f64, Complex64)>> = cov
         .iter()
         .take(n)
-        .map(|row| row.iter().take(runs).map(sqrt_psd).collect())
+        .map(|row| row.iter().take(runs).map(moments).collect())
         .collect();
-    let mut whitened = DMatrix::zeros(2 * q, 2 * used_rows.len() * runs);
-    for (i, &a) in used_rows.iter().enumerate() {
-        for (k, root) in roots[a].iter().enumerate() {
-            whitened
-                .columns_mut(2 * (i * runs + k), 2)
-                .copy_from(&jc(i, k, root));
+    let a_vec = DMatrix::from_fn(q, m, |j, i| -apinv[(j, i)] * row_weights[i]);
+    let b_vec: Vec<Complex64> = (0..m).map(|i| -r[i] * row_weights[i]).collect();
+    let xi = DMatrix::from_fn(q, runs, |j, k| g_omega[k][j]);
+    let zero = Complex64::from(0.0);
+    let mut k_mat;
+    let mut j_mat;
+    {
+        let s1 = DMatrix::from_fn(m, 1, |i, _| {
+            Complex64::from(
+                (0..runs)
+                    .map(|k| mom[used_rows[i]][k].0 * lambda[k].norm_sqr())
+                    .sum::<f64>(),
+            )
+        });
+        let p1 = DMatrix::from_fn(m, 1, |i, _| {
+            (0..runs)
+                .map(|k| mom[used_rows[i]][k].1 * lambda[k] * lambda[k])
+                .sum::<Complex64>()
+        });
+        let s2: Vec<f64> = (0..runs)
+            .map(|k| {
+                (0..m)
+                    .map(|i| mom[used_rows[i]][k].0 * b_vec[i].norm_sqr())
+                    .sum()
+            })
+            .collect();
+        let p2: Vec<Complex64> = (0..runs)
+            .map(|k| {
+                (0..m)
+                    .map(|i| mom[used_rows[i]][k].1.conj() * b_vec[i] * b_vec[i])
+                    .sum()
+            })
+            .collect();
+        let p3 = DMatrix::from_fn(m, runs, |i, k| {
+            mom[used_rows[i]][k].1 * lambda[k] * b_vec[i].conj()
+        });
+        let s3 = DMatrix::from_fn(m, runs, |i, k| {
+            mom[used_rows[i]][k].0 * lambda[k] * b_vec[i]
+        });
+        let scaled = |d: &DMatrix<Complex64>| {
+            let mut x = a_vec.clone();
+            for (i, mut col) in x.column_iter_mut().enumerate() {
+                col *= d[(i, 0)];
+            }
+            x
+        };
+        let xi_scaled = |d: &[f64]| {
+            let mut x = xi.clone();
+            for (k, mut col) in x.column_iter_mut().enumerate() {
+                col *= Complex64::from(d[k].sqrt());
+            }
+            x
+        };
+        let xs = xi_scaled(&s2);
+        k_mat = scaled(&s1) * a_vec.adjoint() + &xs * xs.adjoint();
+        let k3 = &a_vec * (p3 * xi.adjoint());
+        k_mat += &k3 + k3.adjoint();
+        let mut xp = xi.clone();
+        for (k, mut col) in xp.column_iter_mut().enumerate() {
+            col *= p2[k];
         }
+        j_mat = scaled(&p1) * a_vec.transpose() + xp * xi.transpose();
+        let j3 = &a_vec * (s3 * xi.transpose());
+        j_mat += &j3 + j3.transpose();
     }
-    let correction_full = &whitened * whitened.transpose();
+    let correction_full = real_cov_full(&k_mat, &j_mat);
     let correction = (0..q)
         .map(|j| {
             correction_full
@@ -198,35 +273,36 @@ pub fn propagate(
         })
         .collect();
 
-    // dR̂_a = W̃_a dC + λ_k δ for the readings of row a: the first part has
-    // covariance W̃ Cov(C) W̃ᵀ; the direct part (which alone is `residual`) and
-    // its cross terms with dC come only from row a's own readings.
+    // dR̂_a = W̃_a dC + Σ_k λ_k δ_ak: the direct part (alone `residual`), the
+    // part through C (w K wᴴ, w J wᵀ), and for a used row the cross terms of
+    // its own readings, whose share of dC is (w·a_i) λ_k δ + (w·ξ_k) b_i δ̄.
+    let w_used = DMatrix::from_fn(n, q, |a, j| w[(a, used_planes[j])]);
+    let wk = &w_used * &k_mat;
+    let wj = &w_used * &j_mat;
+    let wxi = &w_used * &xi; // n × runs: w_a · ξ_k
     let (residual, prediction) = (0..n)
         .map(|a| {
-            let wt = DMatrix::from_fn(2, 2 * q, |row, col| {
-                let m = real_map(w[(a, used_planes[col / 2])], Complex64::from(0.0));
-                m[(row, col % 2)]
-            });
-            let through_c = &wt * &correction_full * wt.transpose();
-            let mut direct_cov = Matrix2::zeros();
-            let mut cross_cov = Matrix2::zeros();
-            for (k, root) in roots[a].iter().enumerate() {
-                let direct = real_map(lambda[k], Complex64::from(0.0)) * root;
-                direct_cov += direct * direct.transpose();
-                if let Some(i) = position[a] {
-                    let via = &wt * jc(i, k, root);
-                    let cross = Matrix2::new(via[(0, 0)], via[(0, 1)], via[(1, 0)], via[(1, 1)])
-                        * direct.transpose();
-                    cross_cov += cross + cross.transpose();
+            let (mut kd, mut jd) = (0.0, zero);
+            let (mut kx, mut jx) = (zero, zero);
+            // w_a · a_i, the row's own share (never a rows × rows product).
+            let wa = position[a].map(|i| w_used.row(a).transpose().dot(&a_vec.column(i)));
+            for k in 0..runs {
+                let (s, p) = mom[a][k];
+                let l = lambda[k];
+                kd += s * l.norm_sqr();
+                jd += p * l * l;
+                if let (Some(i), Some(wa)) = (position[a], wa) {
+                    let u = wa * l;
+                    let v = wxi[(a, k)] * b_vec[i];
+                    kx += u * l.conj() * s + v * l.conj() * p.conj();
+                    jx += u * l * p + v * l * s;
                 }
             }
-            let through_c = Matrix2::new(
-                through_c[(0, 0)],
-                through_c[(0, 1)],
-                through_c[(1, 0)],
-                through_c[(1, 1)],
-            );
-            (direct_cov, through_c + direct_cov + cross_cov)
+            let kt: Complex64 = (0..q).map(|j| wk[(a, j)] * w_used[(a, j)].conj()).sum();
+            let jt: Complex64 = (0..q).map(|j| wj[(a, j)] * w_used[(a, j)]).sum();
+            let direct = real_cov(kd, jd);
+            let whole = real_cov(kt.re + kd + 2.0 * kx.re, jt + jd + 2.0 * jx);
+            (direct, whole)
         })
         .unzip();
 

@@ -92,6 +92,7 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
             })
             .collect(),
         runs,
+        runout: None,
     }
 }
 

@@ -1,5 +1,6 @@
 //! Command line: `fieldbal serve` runs the service, `fieldbal solve` solves a file offline,
-//! `fieldbal identify` identifies model coefficients offline.
+//! `fieldbal identify` identifies model coefficients offline, `fieldbal coefficients`
+//! pools session files into influence coefficients.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -34,6 +35,16 @@ pub enum Command {
     /// API 617/684 residual-unbalance check of a file (the body of
     /// `POST /api/v1/residual-unbalance`; `-` for standard input).
     Residual { file: PathBuf },
+    /// Pool the runs of several session files into one set of influence
+    /// coefficients (each session against its own reference run) and print them as JSON.
+    Coefficients {
+        /// Session files (as for `solve`), at least one.
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+        /// Pooling options JSON (`exclude_disagreeing`, `amplitude_noise_pct`, `phase_noise_deg`).
+        #[arg(long)]
+        options: Option<PathBuf>,
+    },
     /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
     Identify {
         #[arg(value_enum)]
@@ -59,6 +70,9 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Serve(args) => crate::http::serve_main(args),
         Command::Solve { file, options } => solve_file(&file, options.as_deref()),
         Command::Residual { file } => print_result(residual_file(&file)),
+        Command::Coefficients { files, options } => {
+            print_result(pool_files(&files, options.as_deref()))
+        }
         Command::Identify { what, file } => print_result(identify_file(what, &file)),
     }
 }
@@ -185,4 +199,24 @@ fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
         out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
     }
     Ok(serde_json::json!({ "cases": out }))
+}
+
+/// `fieldbal coefficients`: the sessions' pooled coefficients (v2 "Machines"),
+/// each session named by its file path.
+fn pool_files(
+    files: &[PathBuf],
+    options: Option<&std::path::Path>,
+) -> Result<serde_json::Value, InputError> {
+    let mut sessions = Vec::with_capacity(files.len());
+    for (i, f) in files.iter().enumerate() {
+        let (session, _) = balancing::parse_session_file(&read(f)?)
+            .map_err(|e| e.under(&format!("sessions[{i}]")))?;
+        sessions.push((f.display().to_string(), session));
+    }
+    let opts = match options {
+        Some(path) => balancing::from_json(&read(path)?).map_err(|e| e.under("options"))?,
+        None => balancing::job::pool::PoolOptions::default(),
+    };
+    let pooled = balancing::job::pool::pool(&sessions, &opts)?;
+    Ok(serde_json::to_value(pooled).expect("coefficients serialise"))
 }

@@ -131,6 +131,7 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
             })
             .collect(),
         runs,
+        runout: None,
     }
 }
 

@@ -15,6 +15,7 @@ pub mod diagnostics;
 pub mod error;
 pub mod fit;
 pub mod influence;
+pub mod job;
 pub mod limits;
 pub mod model;
 pub mod phasor;
@@ -70,5 +71,5 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 /// Solve a session with options.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
     limits::check_options(options, &limits::Limits::current())?;
-    solve::solve(session, options)
+    job::solve(session, options)
 }

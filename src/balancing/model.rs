@@ -199,6 +199,46 @@ pub struct Session {
     pub planes: Vec<Plane>,
     pub sensors: Vec<Sensor>,
     pub runs: Vec<Run>,
+    /// Slow-roll (runout) vectors, subtracted from every reading of their sensor (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub runout: Option<Vec<Runout>>,
+}
+
+/// The slow-roll vector of a sensor (v2 "Runout"): in the sensor's unit and
+/// the session's phase convention.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Runout {
+    pub sensor: String,
+    pub amplitude: f64,
+    pub phase_deg: f64,
+}
+
+/// A supplied influence coefficient (v2 "Coefficients supplied or stored"):
+/// the solution's shape, with an optional covariance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SuppliedCoefficient {
+    pub speed_rpm: f64,
+    pub sensor: String,
+    pub plane: String,
+    /// Sensor unit per gram.
+    pub amplitude_per_g: f64,
+    /// In the session's `phase` convention.
+    pub phase_deg: f64,
+    /// 2×2 covariance of the coefficient's real and imaginary parts, (unit/g)²,
+    /// real axis at phase 0 and imaginary axis at +90° in the session's phase convention.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub covariance: Option<[[f64; 2]; 2]>,
+}
+
+/// Which machine's stored coefficients a solve uses (latest version when absent).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CoefficientsFrom {
+    pub machine: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub version: Option<i64>,
 }
 
 /// What the correction minimises.
@@ -250,6 +290,15 @@ pub struct SolveOptions {
     /// 1X phase repeatability, degrees (default 2).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub phase_noise_deg: Option<f64>,
+    /// Correct from the rotor as it was in this run, its weights still on (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_run: Option<String>,
+    /// Influence coefficients to use instead of estimating them from trial runs (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub influence_coefficients: Option<Vec<SuppliedCoefficient>>,
+    /// A machine's stored coefficients, resolved by the service (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coefficients_from: Option<CoefficientsFrom>,
     /// Fit whole weights from each plane's kit at its fixed places, jointly
     /// over all planes: the solution adds `fit` and `fit_summary`.
     #[serde(default, skip_serializing_if = "Option::is_none")]

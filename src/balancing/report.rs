@@ -65,6 +65,7 @@ fn corrections(fit: &Fit, warnings: &mut Vec<Warning>) -> Vec<Correction> {
                 unbalance_gmm: plane.radius_mm.map(|r| mass_g * r),
                 split,
                 uncertainty: None,
+                total: None,
             }
         })
         .collect()
@@ -207,6 +208,10 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
             .iter()
             .map(|&j| session.planes[j].id.clone())
             .collect(),
+        runout: None,
+        from_run: None,
+        run_checks: None,
+        coefficients_from: None,
         fit: None,
         fit_summary: None,
         static_couple: None,

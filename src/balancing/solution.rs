@@ -47,6 +47,51 @@ pub struct Correction {
     pub split: Option<Vec<SplitPart>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub uncertainty: Option<Uncertainty>,
+    /// With `from_run`: the one weight in this plane that replaces every weight
+    /// in it, relative to the reference state (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub total: Option<TotalWeight>,
+}
+
+/// One weight per plane, relative to the reference state.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct TotalWeight {
+    pub mass_g: f64,
+    /// In the session's `angle_direction`.
+    pub angle_deg: f64,
+}
+
+/// One row of a run check: a reading and what the other runs predict for it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct RunCheckRow {
+    pub speed_rpm: f64,
+    pub sensor: String,
+    /// The run's reading (runout subtracted): amplitude, sensor unit.
+    pub measured: f64,
+    /// Its phase, session's phase convention.
+    pub measured_phase_deg: f64,
+    /// The amplitude predicted from the influence coefficients of the other runs.
+    pub predicted: f64,
+    pub predicted_phase_deg: f64,
+    /// 95 % upper bound of the amplitude the reading should show if the run is
+    /// what its weights say (prediction and reading noise).
+    pub amplitude_95: f64,
+}
+
+/// A run compared with its prediction from the other runs (v2 `run_checks`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct RunCheck {
+    pub run: String,
+    pub rows: Vec<RunCheckRow>,
+    pub rms_measured: f64,
+    pub rms_predicted: f64,
+    /// False when the run differs from its prediction by more than the
+    /// readings' noise explains (χ² test at the 99 % level).
+    pub consistent: bool,
+    /// The χ² statistic of the differences against their covariance.
+    pub chi2: f64,
+    /// Its degrees of freedom (2 per row).
+    pub dof: usize,
 }
 
 /// Vibration expected after the corrections at one sensor and speed.
@@ -180,6 +225,18 @@ pub struct Solution {
     pub dropped_planes: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub iso_21940: Option<IsoTolerance>,
+    /// The session's runout vectors, as subtracted (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub runout: Option<Vec<crate::balancing::model::Runout>>,
+    /// The run whose state the corrections are added to (v2 `from_run`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_run: Option<String>,
+    /// Runs compared with their prediction from the other runs (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub run_checks: Option<Vec<RunCheck>>,
+    /// The machine and version of the stored coefficients used (v2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coefficients_from: Option<crate::balancing::model::CoefficientsFrom>,
     /// With `discrete: true`: the kit weights to fit, per plane, chosen jointly.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fit: Option<Vec<FitPlane>>,

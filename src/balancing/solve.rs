@@ -88,7 +88,12 @@ fn correction(
 /// diagnostics, in the session's conventions.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
     let checked = check(session)?;
-    let w = influence_matrix(&checked)?;
+    // Supplied or stored coefficients (v2) replace the estimate from trial runs.
+    let supplied = super::job::supplied::resolve(&checked, options)?;
+    let w = match &supplied {
+        Some(s) => s.w.clone(),
+        None => influence_matrix(&checked)?,
+    };
     let selection = select(&checked, options)?;
     let noise = uncertainty::noise_options(options)?;
 
@@ -147,7 +152,10 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     let mut solution = report::solution(&fit, options, &a);
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
-    uncertainty::fill(&fit, options, &cov, &mut solution);
+    match &supplied {
+        None => uncertainty::fill(&fit, options, &cov, &mut solution),
+        Some(s) => super::job::supplied::fill(&fit, s, options, noise, &mut solution),
+    }
     // The ISO 21940-11 verdict reads the corrections' uncertainty (issue 17).
     super::acceptance::iso::fill(session, &mut solution);
     // Kit weights, jointly over the planes, and the static/couple parts (issue 11).

@@ -329,6 +329,8 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     check_session(session, &limits)?;
     let conventions = session.conventions.unwrap_or_default();
     let (planes, sensors) = check_setup(session)?;
+    // Runout vectors (v2), subtracted from the readings below.
+    let runout = super::job::runout::vectors(session, conventions)?;
     unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
 
     // Per-field checks of every run, and the reference run.
@@ -468,7 +470,8 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
 
     let y = DMatrix::from_fn(rows.len(), runs.len(), |a, k| {
         let r = &session.runs[runs[k]].readings[rows[a].readings[k]];
-        reading_in(conventions, r.amplitude, r.phase_deg)
+        let sensor = rows[a].sensor;
+        reading_in(conventions, r.amplitude, r.phase_deg) - runout[sensor].unwrap_or_default()
     });
     let mut t = DMatrix::zeros(session.planes.len(), runs.len() - 1);
     for (k, &i) in runs.iter().enumerate().skip(1) {

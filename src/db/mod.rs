@@ -8,6 +8,7 @@
 
 pub mod health;
 pub mod idempotency;
+pub mod machines;
 pub mod runs;
 pub mod sessions;
 pub mod solutions;

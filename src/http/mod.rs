@@ -9,6 +9,7 @@ pub mod error;
 pub mod extract;
 pub mod headers;
 pub mod identify;
+pub mod machines;
 pub mod openapi;
 pub mod residual;
 pub mod runs;
@@ -195,6 +196,18 @@ pub fn app(state: AppState) -> Router {
         .route(
             "/api/v1/sessions/{id}/solutions",
             post(solve::create_solution).get(solve::list_solutions),
+        )
+        .route(
+            "/api/v1/machines",
+            post(machines::create).get(machines::list),
+        )
+        .route(
+            "/api/v1/machines/{id}",
+            get(machines::get).delete(machines::delete),
+        )
+        .route(
+            "/api/v1/machines/{id}/coefficients",
+            post(machines::pool_coefficients).get(machines::get_coefficients),
         )
         .with_state(state);
     Router::new()

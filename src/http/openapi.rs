@@ -7,7 +7,7 @@ use utoipa::openapi::security::{HttpAuthScheme, HttpBuilder, SecurityRequirement
 use utoipa::openapi::{ContentBuilder, Ref, RefOr};
 use utoipa::{Modify, OpenApi};
 
-use super::{identify, residual, runs, sessions, solve, trial_weights};
+use super::{identify, machines, residual, runs, sessions, solve, trial_weights};
 
 #[derive(OpenApi)]
 #[openapi(
@@ -26,6 +26,12 @@ use super::{identify, residual, runs, sessions, solve, trial_weights};
         solve::create_solution,
         solve::list_solutions,
         residual::check,
+        machines::create,
+        machines::list,
+        machines::get,
+        machines::delete,
+        machines::pool_coefficients,
+        machines::get_coefficients,
         identify::rotor,
         identify::free_decay,
         identify::model,
@@ -37,6 +43,7 @@ use super::{identify, residual, runs, sessions, solve, trial_weights};
         (name = "sessions", description = "Stored balancing sessions"),
         (name = "runs", description = "Runs of a stored session, entered one at a time"),
         (name = "solve", description = "Corrections"),
+        (name = "machines", description = "Machines, their sessions and stored influence coefficients"),
         (name = "service", description = "Operations"),
         (name = "acceptance", description = "Test-stand acceptance: API's residual-unbalance check"),
         (name = "identification", description = "Model coefficients from stand data: one-mass rotor, free decay, discrete-model correction"),

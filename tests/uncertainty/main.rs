@@ -197,6 +197,7 @@ pub fn session(
             })
             .collect(),
         runs: (0..y.len()).map(run).collect(),
+        runout: None,
     }
 }
 

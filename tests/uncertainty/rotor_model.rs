@@ -165,5 +165,6 @@ pub fn session(
             })
             .collect(),
         runs: (0..y.len()).map(run).collect(),
+        runout: None,
     }
 }

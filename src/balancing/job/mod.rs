@@ -1,0 +1,114 @@
+//! The job goes on (v2): runout, corrections from the rotor as it is
+//! (`from_run`, with `total` per plane), run checks, and supplied or pooled
+//! influence coefficients. This module wraps the one-shot solve of `solve.rs`.
+//!
+//! `from_run`: the rotor as it was in run `r`, its weights `T_r` still on. The
+//! session is re-referenced to that run (method 2.1 holds for any reference:
+//! `Y_k − Y_r = W (T_k − T_r)`), so the correction minimises the vibration
+//! predicted from the run's own readings, `Y_r + W C` (3.1), and `C` is what to
+//! add. The one weight per plane that replaces everything in it is then
+//! `T_r + C`, relative to the reference state.
+
+pub mod checks;
+pub mod linear;
+pub mod pool;
+pub mod runout;
+pub mod supplied;
+
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Session, SolveOptions, Weight};
+use crate::balancing::phasor::{weight_in, weight_out};
+use crate::balancing::select::select;
+use crate::balancing::solution::{Solution, TotalWeight};
+use crate::balancing::solve as one_shot;
+use crate::balancing::uncertainty::noise_options;
+use crate::balancing::validate::check;
+
+/// Solve with the v2 options: `from_run`, `influence_coefficients`, and the
+/// run checks; without them, exactly the v1 solve plus `run_checks`.
+pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
+    let checked = check(session)?;
+    if options.coefficients_from.is_some() && options.influence_coefficients.is_none() {
+        return Err(InputError::invalid(
+            "coefficients_unavailable",
+            "options.coefficients_from",
+            "a machine's stored coefficients are read by the service (POST /api/v1/solve or a stored session's solutions); offline, give them as influence_coefficients",
+        ));
+    }
+    let from = match &options.from_run {
+        None => None,
+        Some(id) => Some(
+            session
+                .runs
+                .iter()
+                .position(|r| &r.id == id)
+                .ok_or_else(|| {
+                    InputError::invalid(
+                        "unknown_run",
+                        "options.from_run",
+                        format!("the session has no run '{id}'"),
+                    )
+                })?,
+        ),
+    };
+    let rebased = from.map(|r| rebase(session, r));
+    let mut solution = one_shot::solve(rebased.as_ref().unwrap_or(session), options)?;
+
+    if let Some(r) = from {
+        let conv = checked.conventions;
+        for corr in &mut solution.corrections {
+            let on: num_complex::Complex64 = session.runs[r]
+                .weights
+                .iter()
+                .filter(|w| w.plane == corr.plane)
+                .map(|w| weight_in(conv, w.mass_g, w.angle_deg))
+                .sum();
+            let (mass_g, angle_deg) =
+                weight_out(conv, on + weight_in(conv, corr.mass_g, corr.angle_deg));
+            corr.total = Some(TotalWeight { mass_g, angle_deg });
+        }
+        solution.from_run = options.from_run.clone();
+    }
+
+    let noise = noise_options(options)?;
+    let rows = select(&checked, options)?.rows;
+    let (run_checks, warnings) = match supplied::resolve(&checked, options)? {
+        Some(s) => {
+            // Trials do not estimate W here: their small effect says nothing.
+            solution.warnings.retain(|w| w.code != "trial_effect_small");
+            checks::supplied_checks(&checked, &rows, noise, &s.w, &s.cov)
+        }
+        None => checks::run_checks(&checked, &rows, noise),
+    };
+    solution.warnings.extend(warnings);
+    if !run_checks.is_empty() {
+        solution.run_checks = Some(run_checks);
+    }
+    solution.runout = session.runout.clone();
+    solution.coefficients_from = options.coefficients_from.clone();
+    Ok(solution)
+}
+
+/// The session re-referenced to run `r`: that run's weights become the
+/// reference state, so every run lists its weights minus run `r`'s (a weight
+/// taken off is the same weight at the opposite angle). Run order is kept, so
+/// field paths of errors still name the posted runs.
+pub fn rebase(session: &Session, r: usize) -> Session {
+    let off: Vec<Weight> = session.runs[r]
+        .weights
+        .iter()
+        .map(|w| Weight {
+            angle_deg: w.angle_deg + 180.0,
+            ..w.clone()
+        })
+        .collect();
+    let mut out = session.clone();
+    for (i, run) in out.runs.iter_mut().enumerate() {
+        if i == r {
+            run.weights.clear();
+        } else {
+            run.weights.extend(off.iter().cloned());
+        }
+    }
+    out
+}

@@ -1,0 +1,304 @@
+//! A machine's influence coefficients pooled from several sessions (v2
+//! "Machines"): every session's trial runs against its own reference run, one
+//! influence matrix for all — `ΔY` and `T` stacked across sessions and
+//! `W = ΔY T⁺` through the SVD (method 2.1) — with each coefficient's
+//! covariance from the readings' noise. A session whose runs disagree with
+//! what the other sessions' coefficients predict (the χ² test of
+//! [`super::linear`], 99 %) is named in `coefficients_disagree`, and left out
+//! with `exclude_disagreeing`.
+//!
+//! Rows are the (sensor, speed point) pairs that every session measured
+//! (sensors by id, speeds within 1 %, the first session's speeds); planes are
+//! matched by id (a plane a session lacks had no weight in it).
+
+use nalgebra::{DMatrix, DVector, Matrix2};
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::checks;
+use super::linear::{self, Data, Source, Trial};
+use super::supplied::covariance_frame;
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Conventions, Session, SolveOptions, SuppliedCoefficient};
+use crate::balancing::phasor::reading_out;
+use crate::balancing::solution::Warning;
+use crate::balancing::uncertainty::noise_options;
+use crate::balancing::validate::check;
+
+/// Options of a pooling.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PoolOptions {
+    /// Leave out the sessions named in `coefficients_disagree`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exclude_disagreeing: Option<bool>,
+    /// 1X amplitude repeatability, percent (default 2), where a reading has no samples.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub amplitude_noise_pct: Option<f64>,
+    /// 1X phase repeatability, degrees (default 2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub phase_noise_deg: Option<f64>,
+}
+
+/// A session compared with the others' coefficients.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct SessionCheck {
+    pub session: String,
+    pub consistent: bool,
+    pub chi2: f64,
+    pub dof: usize,
+}
+
+/// Pooled coefficients, in the first session's conventions.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct Pooled {
+    pub conventions: Conventions,
+    /// Sessions whose runs were pooled.
+    pub sessions: Vec<String>,
+    /// Sessions left out by `exclude_disagreeing`.
+    pub excluded: Vec<String>,
+    pub influence_coefficients: Vec<SuppliedCoefficient>,
+    pub checks: Vec<SessionCheck>,
+    pub warnings: Vec<Warning>,
+}
+
+/// Pool the sessions `(id, session)`; errors name `sessions[i]` or `options.…`.
+pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Pooled, InputError> {
+    if sessions.is_empty() {
+        return Err(InputError::invalid(
+            "invalid_value",
+            "sessions",
+            "list at least one session",
+        ));
+    }
+    let noise = noise_options(&SolveOptions {
+        amplitude_noise_pct: options.amplitude_noise_pct,
+        phase_noise_deg: options.phase_noise_deg,
+        ..SolveOptions::default()
+    })?;
+    let checked = sessions
+        .iter()
+        .enumerate()
+        .map(|(i, (_, s))| check(s).map_err(|e| e.under(&format!("sessions[{i}]"))))
+        .collect::<Result<Vec<_>, _>>()?;
+    let first = &checked[0];
+    let conv = first.conventions;
+    // Rows of the first session found in every session: index per session.
+    let mut rows: Vec<Vec<usize>> = Vec::new();
+    for (a, row) in first.rows.iter().enumerate() {
+        let sensor = &first.session.sensors[row.sensor].id;
+        let found: Option<Vec<usize>> = checked
+            .iter()
+            .map(|c| {
+                let point = c.point_of(row.speed_rpm)?;
+                c.rows
+                    .iter()
+                    .position(|r| r.point == point && &c.session.sensors[r.sensor].id == sensor)
+            })
+            .collect();
+        if let Some(f) = found {
+            debug_assert_eq!(f[0], a);
+            rows.push(f);
+        }
+    }
+    if rows.is_empty() {
+        return Err(InputError::invalid(
+            "no_common_rows",
+            "sessions",
+            "the sessions have no sensor and speed in common to pool",
+        ));
+    }
+    let mut plane_ids: Vec<String> = Vec::new();
+    for c in &checked {
+        for p in &c.session.planes {
+            if !plane_ids.contains(&p.id) {
+                plane_ids.push(p.id.clone());
+            }
+        }
+    }
+    // Merge the sessions' data on the common rows and planes.
+    let n = rows.len();
+    let mut cols: Vec<DVector<num_complex::Complex64>> = Vec::new();
+    let mut cov: Vec<Vec<Matrix2<f64>>> = vec![Vec::new(); n];
+    let mut trials = Vec::new();
+    let mut owner = Vec::new();
+    for (s, c) in checked.iter().enumerate() {
+        let d = checks::data(c, noise);
+        let base = cols.len();
+        for m in 0..d.y.ncols() {
+            cols.push(DVector::from_fn(n, |a, _| d.y[(rows[a][s], m)]));
+            for (a, cv) in cov.iter_mut().enumerate() {
+                cv.push(d.cov[rows[a][s]][m]);
+            }
+        }
+        for tr in d.trials {
+            let mut w = DVector::zeros(plane_ids.len());
+            for (j, p) in c.session.planes.iter().enumerate() {
+                let k = plane_ids
+                    .iter()
+                    .position(|x| x == &p.id)
+                    .expect("plane listed");
+                w[k] = tr.weights[j];
+            }
+            trials.push(Trial {
+                col: base + tr.col,
+                reference: base + tr.reference,
+                weights: w,
+            });
+            owner.push(s);
+        }
+    }
+    let data = Data {
+        y: DMatrix::from_columns(&cols),
+        cov,
+        trials,
+        planes: plane_ids.len(),
+    };
+    let all_rows: Vec<usize> = (0..n).collect();
+    // Backward elimination: test every active session against the other
+    // active ones; the worst inconsistent one is named and leaves the pool for
+    // the next round (one changed rotor must not spoil the others' check).
+    // Two sessions that disagree cannot be told apart: both are named.
+    let test_one = |s: usize, active: &[usize]| -> Option<linear::Test> {
+        let tested: Vec<usize> = (0..data.trials.len()).filter(|&k| owner[k] == s).collect();
+        let others: Vec<usize> = (0..data.trials.len())
+            .filter(|&k| owner[k] != s && active.contains(&owner[k]))
+            .collect();
+        if tested.is_empty() {
+            return None;
+        }
+        let est = linear::estimate(&data, &others)?;
+        Some(linear::test(
+            &data,
+            &tested,
+            &all_rows,
+            Source::Estimated(&est),
+        ))
+    };
+    let mut active: Vec<usize> = (0..sessions.len()).collect();
+    let mut bad: Vec<usize> = Vec::new();
+    let mut results: Vec<Option<linear::Test>> = vec![None; sessions.len()];
+    for _ in 0..sessions.len() {
+        let round: Vec<(usize, linear::Test)> = active
+            .iter()
+            .filter_map(|&s| test_one(s, &active).map(|t| (s, t)))
+            .collect();
+        for (s, t) in &round {
+            results[*s] = Some(t.clone());
+        }
+        let worst = round
+            .iter()
+            .filter(|(_, t)| !t.consistent)
+            .max_by(|(_, a), (_, b)| {
+                let ra = a.chi2 / linear::chi2_quantile(a.dof);
+                let rb = b.chi2 / linear::chi2_quantile(b.dof);
+                ra.total_cmp(&rb)
+            })
+            .map(|(s, _)| *s);
+        let Some(w) = worst else { break };
+        if active.len() == 2 {
+            bad.extend(active.iter().copied());
+            break;
+        }
+        bad.push(w);
+        active.retain(|&s| s != w);
+    }
+    bad.sort_unstable();
+    let checks_out: Vec<SessionCheck> = results
+        .iter()
+        .enumerate()
+        .filter_map(|(s, t)| {
+            t.as_ref().map(|t| SessionCheck {
+                session: sessions[s].0.clone(),
+                consistent: !bad.contains(&s),
+                chi2: t.chi2,
+                dof: t.dof,
+            })
+        })
+        .collect();
+    let mut warnings = Vec::new();
+    if !bad.is_empty() {
+        let names: Vec<String> = bad
+            .iter()
+            .map(|&s| format!("'{}'", sessions[s].0))
+            .collect();
+        warnings.push(Warning {
+            code: "coefficients_disagree".into(),
+            message: format!(
+                "session(s) {} disagree with the coefficients of the other sessions by more than the readings' noise explains: the rotor, its mounting or its speed may have changed, or a weight was typed wrong; pool with options.exclude_disagreeing to leave them out",
+                names.join(", ")
+            ),
+            plane: None,
+        });
+    }
+    let exclude = options.exclude_disagreeing.unwrap_or(false);
+    let used: Vec<usize> = (0..sessions.len())
+        .filter(|s| !(exclude && bad.contains(s)))
+        .collect();
+    let set: Vec<usize> = (0..data.trials.len())
+        .filter(|&k| used.contains(&owner[k]))
+        .collect();
+    let est = linear::estimate(&data, &set).ok_or_else(|| {
+        InputError::invalid(
+            "dependent_trials",
+            "sessions",
+            "the pooled trial runs do not give every plane an independent trial (or every session was left out)",
+        )
+    })?;
+    let wcov = linear::covariance(&data, &est);
+    let mut coefficients = Vec::with_capacity(n * plane_ids.len());
+    for (a, r) in rows.iter().enumerate() {
+        let row = &first.rows[r[0]];
+        for (j, plane) in plane_ids.iter().enumerate() {
+            let (amplitude_per_g, phase_deg) = reading_out(conv, est.w[(a, j)]);
+            let c = covariance_frame(conv, &wcov[a][j]);
+            coefficients.push(SuppliedCoefficient {
+                speed_rpm: row.speed_rpm,
+                sensor: first.session.sensors[row.sensor].id.clone(),
+                plane: plane.clone(),
+                amplitude_per_g,
+                phase_deg,
+                covariance: Some([[c[(0, 0)], c[(0, 1)]], [c[(1, 0)], c[(1, 1)]]]),
+            });
+        }
+    }
+    Ok(Pooled {
+        conventions: conv,
+        sessions: used.iter().map(|&s| sessions[s].0.clone()).collect(),
+        excluded: (0..sessions.len())
+            .filter(|s| !used.contains(s))
+            .map(|s| sessions[s].0.clone())
+            .collect(),
+        influence_coefficients: coefficients,
+        checks: checks_out,
+        warnings,
+    })
+}
+
+/// Coefficients from one phase convention to another (the angle direction
+/// does not enter: 1 g at angle 0 is the same weight either way).
+pub fn convert(
+    coefficients: &[SuppliedCoefficient],
+    from: Conventions,
+    to: Conventions,
+) -> Vec<SuppliedCoefficient> {
+    use crate::balancing::phasor::reading_in;
+    coefficients
+        .iter()
+        .map(|c| {
+            let w = reading_in(from, c.amplitude_per_g, c.phase_deg);
+            let (amplitude_per_g, phase_deg) = reading_out(to, w);
+            let covariance = c.covariance.map(|m| {
+                let m = Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
+                let m = covariance_frame(to, &covariance_frame(from, &m));
+                [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]]
+            });
+            SuppliedCoefficient {
+                amplitude_per_g,
+                phase_deg,
+                covariance,
+                ..c.clone()
+            }
+        })
+        .collect()
+}

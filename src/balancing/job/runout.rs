@@ -1,0 +1,59 @@
+//! Runout (slow-roll) compensation (v2 "Runout"): a sensor's slow-roll vector
+//! is subtracted from every reading of that sensor, at every speed and in every
+//! run, before anything else (so the influence coefficients, corrections, run
+//! checks and pooled coefficients all see compensated readings).
+//!
+//! The noise model of a reading stays relative to the compensated phasor (the
+//! one the solve uses); samples are compensated by the same constant, which
+//! leaves their scatter unchanged.
+
+use num_complex::Complex64;
+
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Conventions, Session};
+use crate::balancing::phasor::reading_in;
+
+const MAX_AMPLITUDE: f64 = 1e9;
+const MAX_ANGLE_DEG: f64 = 1e6;
+
+/// The runout phasor of each sensor (internal frame), by sensor index; `None`
+/// for a sensor without one. Errors name `runout[i].…`.
+pub fn vectors(session: &Session, conv: Conventions) -> Result<Vec<Option<Complex64>>, InputError> {
+    let mut out = vec![None; session.sensors.len()];
+    for (i, r) in session.runout.iter().flatten().enumerate() {
+        let f = |x: &str| format!("runout[{i}].{x}");
+        let Some(s) = session.sensors.iter().position(|s| s.id == r.sensor) else {
+            return Err(InputError::invalid(
+                "unknown_sensor",
+                f("sensor"),
+                format!("no sensor has the id '{}'", r.sensor),
+            ));
+        };
+        if out[s].is_some() {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                f("sensor"),
+                format!(
+                    "sensor '{}' has a runout vector already: give one per sensor",
+                    r.sensor
+                ),
+            ));
+        }
+        if !(r.amplitude.is_finite() && (0.0..=MAX_AMPLITUDE).contains(&r.amplitude)) {
+            return Err(InputError::invalid(
+                "invalid_value",
+                f("amplitude"),
+                format!("the runout amplitude must be a finite number from 0 to {MAX_AMPLITUDE}"),
+            ));
+        }
+        if !(r.phase_deg.is_finite() && r.phase_deg.abs() <= MAX_ANGLE_DEG) {
+            return Err(InputError::invalid(
+                "invalid_value",
+                f("phase_deg"),
+                format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}"),
+            ));
+        }
+        out[s] = Some(reading_in(conv, r.amplitude, r.phase_deg));
+    }
+    Ok(out)
+}

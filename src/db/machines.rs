@@ -1,0 +1,344 @@
+//! The `machines` and `machine_coefficients` tables (v2 "Machines"): a
+//! machine, its sessions (those whose `machine` is its id) with the summary of
+//! each one's latest solution, and its coefficient versions. A version is
+//! allocated inside the inserting transaction (one more than the machine's
+//! largest), and `UNIQUE (machine_seq, version)` keeps two from colliding.
+
+use serde::{Deserialize, Serialize};
+use sqlx::Row;
+use utoipa::ToSchema;
+
+use super::{sessions, Db, StoreError};
+use crate::balancing::model::{Rotor, Session};
+
+/// A machine as posted.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NewMachine {
+    pub id: String,
+    pub name: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rotor: Option<Rotor>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub notes: Option<String>,
+}
+
+/// A stored machine.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct Machine {
+    pub id: String,
+    pub name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotor: Option<Rotor>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub notes: Option<String>,
+    /// UTC, RFC 3339.
+    pub created_at: String,
+}
+
+/// A page of machines, newest first.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MachineList {
+    pub machines: Vec<Machine>,
+    pub total: i64,
+    pub limit: i64,
+    pub offset: i64,
+}
+
+/// One of a machine's sessions, with the before/after summary of its latest solution.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MachineSession {
+    pub id: String,
+    pub name: String,
+    pub created_at: String,
+    pub runs: i64,
+    /// `summary` of the latest stored solution (rms and max before and after), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<crate::balancing::solution::Summary>)]
+    pub summary: Option<serde_json::Value>,
+    /// When that solution was computed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub solved_at: Option<String>,
+}
+
+/// One coefficient version, without the coefficients.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct VersionSummary {
+    pub version: i64,
+    pub created_at: String,
+    pub sessions: Vec<String>,
+}
+
+/// A machine with its sessions (oldest first) and coefficient versions.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MachineDetail {
+    #[serde(flatten)]
+    pub machine: Machine,
+    pub sessions: Vec<MachineSession>,
+    pub coefficients: Vec<VersionSummary>,
+}
+
+/// A stored coefficient version: its identification and the pooled body.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct StoredCoefficients {
+    pub machine: String,
+    pub version: i64,
+    pub created_at: String,
+    pub sessions: Vec<String>,
+    /// `conventions`, `influence_coefficients`, `excluded`, `checks`, `warnings`.
+    #[serde(flatten)]
+    #[schema(value_type = crate::balancing::job::pool::Pooled)]
+    pub body: serde_json::Map<String, serde_json::Value>,
+}
+
+fn not_found(id: &str) -> StoreError {
+    StoreError::NotFound(format!("no machine has the id '{id}'"))
+}
+
+fn machine_from(r: &sqlx::sqlite::SqliteRow) -> Result<Machine, StoreError> {
+    let rotor: Option<String> = r.get("rotor");
+    Ok(Machine {
+        id: r.get("id"),
+        name: r.get("name"),
+        rotor: rotor.map(|s| serde_json::from_str(&s)).transpose()?,
+        notes: r.get("notes"),
+        created_at: r.get("created_at"),
+    })
+}
+
+/// Store a validated machine; `Conflict` when the id is taken.
+pub async fn create(db: &Db, m: &NewMachine) -> Result<Machine, StoreError> {
+    let mut tx = db.begin_write().await?;
+    let taken = sqlx::query("SELECT 1 FROM machines WHERE id = ?")
+        .bind(&m.id)
+        .fetch_optional(&mut *tx)
+        .await?
+        .is_some();
+    if taken {
+        return Err(StoreError::Conflict {
+            field: "id",
+            message: format!("a machine with the id '{}' exists already", m.id),
+        });
+    }
+    let rotor = m.rotor.as_ref().map(serde_json::to_string).transpose()?;
+    let row = sqlx::query(
+        "INSERT INTO machines (id, name, rotor, notes) VALUES (?, ?, ?, ?)
+         RETURNING id, name, rotor, notes, created_at",
+    )
+    .bind(&m.id)
+    .bind(&m.name)
+    .bind(rotor)
+    .bind(&m.notes)
+    .fetch_one(&mut *tx)
+    .await?;
+    let machine = machine_from(&row)?;
+    tx.commit().await?;
+    Ok(machine)
+}
+
+/// A page of machines, newest first.
+pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<MachineList, StoreError> {
+    let rows = sqlx::query(
+        "SELECT id, name, rotor, notes, created_at FROM machines ORDER BY seq DESC LIMIT ? OFFSET ?",
+    )
+    .bind(limit)
+    .bind(offset)
+    .fetch_all(&db.pool)
+    .await?;
+    let total: i64 = sqlx::query("SELECT COUNT(*) FROM machines")
+        .fetch_one(&db.pool)
+        .await?
+        .get(0);
+    Ok(MachineList {
+        machines: rows.iter().map(machine_from).collect::<Result<_, _>>()?,
+        total,
+        limit,
+        offset,
+    })
+}
+
+/// The machine, its sessions and its coefficient versions, from one snapshot.
+pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
+    let mut read = db.pool.begin().await?;
+    let row =
+        sqlx::query("SELECT seq, id, name, rotor, notes, created_at FROM machines WHERE id = ?")
+            .bind(id)
+            .fetch_optional(&mut *read)
+            .await?
+            .ok_or_else(|| not_found(id))?;
+    let seq: i64 = row.get("seq");
+    let machine = machine_from(&row)?;
+    let rows = sqlx::query(
+        "SELECT s.id, s.name, s.created_at,
+                (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs,
+                (SELECT solution FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solution,
+                (SELECT created_at FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solved_at
+         FROM sessions s WHERE s.machine = ? ORDER BY s.seq",
+    )
+    .bind(id)
+    .fetch_all(&mut *read)
+    .await?;
+    let mut sessions = Vec::with_capacity(rows.len());
+    for r in &rows {
+        let solution: Option<String> = r.get("solution");
+        let summary = match solution {
+            Some(s) => serde_json::from_str::<serde_json::Value>(&s)?
+                .get("summary")
+                .cloned(),
+            None => None,
+        };
+        sessions.push(MachineSession {
+            id: r.get("id"),
+            name: r.get("name"),
+            created_at: r.get("created_at"),
+            runs: r.get("runs"),
+            summary,
+            solved_at: r.get("solved_at"),
+        });
+    }
+    let versions = sqlx::query(
+        "SELECT version, created_at, sessions FROM machine_coefficients WHERE machine_seq = ? ORDER BY version",
+    )
+    .bind(seq)
+    .fetch_all(&mut *read)
+    .await?;
+    let coefficients = versions
+        .iter()
+        .map(|r| {
+            Ok(VersionSummary {
+                version: r.get("version"),
+                created_at: r.get("created_at"),
+                sessions: serde_json::from_str(r.get("sessions"))?,
+            })
+        })
+        .collect::<Result<_, StoreError>>()?;
+    read.commit().await?;
+    Ok(MachineDetail {
+        machine,
+        sessions,
+        coefficients,
+    })
+}
+
+/// Delete a machine and its coefficient versions (never its sessions).
+pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
+    let mut tx = db.begin_write().await?;
+    let done = sqlx::query("DELETE FROM machines WHERE id = ?")
+        .bind(id)
+        .execute(&mut *tx)
+        .await?;
+    if done.rows_affected() == 0 {
+        return Err(not_found(id));
+    }
+    tx.commit().await?;
+    Ok(())
+}
+
+/// Whether the machine exists.
+pub async fn exists(db: &Db, id: &str) -> Result<bool, StoreError> {
+    Ok(sqlx::query("SELECT 1 FROM machines WHERE id = ?")
+        .bind(id)
+        .fetch_optional(&db.pool)
+        .await?
+        .is_some())
+}
+
+/// The listed sessions, from one snapshot; `Err(i)` names the first listed
+/// session that does not exist.
+pub async fn load_sessions(
+    db: &Db,
+    ids: &[String],
+) -> Result<Result<Vec<Session>, usize>, StoreError> {
+    let mut read = db.pool.begin().await?;
+    let mut out = Vec::with_capacity(ids.len());
+    for (i, id) in ids.iter().enumerate() {
+        match sessions::load(&mut read, id).await {
+            Ok((_, s)) => out.push(s),
+            Err(StoreError::NotFound(_)) => return Ok(Err(i)),
+            Err(e) => return Err(e),
+        }
+    }
+    read.commit().await?;
+    Ok(Ok(out))
+}
+
+/// Store a new coefficient version; returns it.
+pub async fn store_coefficients(
+    db: &Db,
+    machine: &str,
+    sessions: &[String],
+    body: serde_json::Map<String, serde_json::Value>,
+) -> Result<StoredCoefficients, StoreError> {
+    let mut tx = db.begin_write().await?;
+    let row = sqlx::query(
+        "INSERT INTO machine_coefficients (machine_seq, version, sessions, body)
+         SELECT m.seq,
+                COALESCE((SELECT MAX(c.version) FROM machine_coefficients c WHERE c.machine_seq = m.seq), 0) + 1,
+                ?, ?
+         FROM machines m WHERE m.id = ?
+         RETURNING version, created_at",
+    )
+    .bind(serde_json::to_string(sessions)?)
+    .bind(serde_json::to_string(&body)?)
+    .bind(machine)
+    .fetch_optional(&mut *tx)
+    .await?
+    .ok_or_else(|| not_found(machine))?;
+    tx.commit().await?;
+    Ok(StoredCoefficients {
+        machine: machine.to_string(),
+        version: row.get("version"),
+        created_at: row.get("created_at"),
+        sessions: sessions.to_vec(),
+        body,
+    })
+}
+
+/// Why stored coefficients could not be read.
+#[derive(Debug)]
+pub enum Missing {
+    Machine,
+    Version,
+    NoVersions,
+}
+
+/// A machine's coefficients: `version`, or the latest.
+pub async fn coefficients(
+    db: &Db,
+    machine: &str,
+    version: Option<i64>,
+) -> Result<Result<StoredCoefficients, Missing>, StoreError> {
+    let mut read = db.pool.begin().await?;
+    let Some(m) = sqlx::query("SELECT seq FROM machines WHERE id = ?")
+        .bind(machine)
+        .fetch_optional(&mut *read)
+        .await?
+    else {
+        return Ok(Err(Missing::Machine));
+    };
+    let seq: i64 = m.get(0);
+    let row = sqlx::query(
+        "SELECT version, created_at, sessions, body FROM machine_coefficients
+         WHERE machine_seq = ? AND (? IS NULL OR version = ?) ORDER BY version DESC LIMIT 1",
+    )
+    .bind(seq)
+    .bind(version)
+    .bind(version)
+    .fetch_optional(&mut *read)
+    .await?;
+    read.commit().await?;
+    let Some(r) = row else {
+        return Ok(Err(if version.is_some() {
+            Missing::Version
+        } else {
+            Missing::NoVersions
+        }));
+    };
+    Ok(Ok(StoredCoefficients {
+        machine: machine.to_string(),
+        version: r.get("version"),
+        created_at: r.get("created_at"),
+        sessions: serde_json::from_str(r.get("sessions"))?,
+        body: serde_json::from_str(r.get("body"))?,
+    }))
+}

@@ -1,0 +1,332 @@
+//! `/api/v1/machines` (v2 "Machines"): create, list, read (with sessions and
+//! coefficient versions) and delete machines; pool sessions into a new
+//! coefficient version and read versions back; and resolve a solve's
+//! `coefficients_from` into supplied coefficients.
+
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{header, StatusCode};
+use axum::response::IntoResponse;
+use axum::Json;
+use serde::{Deserialize, Serialize};
+use utoipa::{IntoParams, ToSchema};
+
+use super::error::{ApiError, ErrorBody};
+use super::extract::JsonBody;
+use super::sessions::ListParams;
+use super::AppState;
+use crate::balancing::job::pool::{self, PoolOptions, Pooled};
+use crate::balancing::model::{Conventions, SolveOptions};
+use crate::balancing::InputError;
+use crate::db::machines::{
+    self, MachineDetail, MachineList, Missing, NewMachine, StoredCoefficients,
+};
+
+const GRADES: [&str; 11] = [
+    "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
+];
+
+fn invalid(field: &str, message: impl Into<String>) -> InputError {
+    InputError::invalid("invalid_value", field, message)
+}
+
+/// The checks of a posted machine (its rotor as in a session).
+fn validate(m: &NewMachine) -> Result<(), InputError> {
+    let n = m.id.chars().count();
+    if n == 0 || n > 64 {
+        return Err(invalid(
+            "id",
+            format!("ids are 1 to 64 characters; this one has {n}"),
+        ));
+    }
+    if m.name.trim().is_empty() || m.name.chars().count() > 200 {
+        return Err(invalid("name", "a name of 1 to 200 characters"));
+    }
+    if m.notes.as_ref().is_some_and(|x| x.chars().count() > 10_000) {
+        return Err(invalid("notes", "at most 10000 characters"));
+    }
+    if let Some(r) = &m.rotor {
+        if !(r.mass_kg.is_finite() && r.mass_kg > 0.0 && r.mass_kg <= 1e7) {
+            return Err(invalid(
+                "rotor.mass_kg",
+                "the rotor mass must be a finite number from above 0 to 1e7",
+            ));
+        }
+        if !(r.service_speed_rpm.is_finite()
+            && r.service_speed_rpm > 0.0
+            && r.service_speed_rpm <= 1e6)
+        {
+            return Err(invalid(
+                "rotor.service_speed_rpm",
+                "the service speed must be a finite number from above 0 to 1e6",
+            ));
+        }
+        if !GRADES.contains(&r.balance_grade.as_str()) {
+            return Err(invalid(
+                "rotor.balance_grade",
+                format!(
+                    "'{}' is not an ISO 21940-11 grade; use one of {}",
+                    r.balance_grade,
+                    GRADES.join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+#[utoipa::path(post, path = "/api/v1/machines", tag = "machines",
+    request_body = NewMachine,
+    responses(
+        (status = 201, description = "Stored", body = machines::Machine,
+         headers(("Location" = String, description = "/api/v1/machines/{id}"))),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 409, description = "A machine with this id exists", body = ErrorBody),
+        (status = 422, description = "Invalid machine", body = ErrorBody),
+    ))]
+pub async fn create(
+    State(state): State<AppState>,
+    JsonBody(m): JsonBody<NewMachine>,
+) -> Result<impl IntoResponse, ApiError> {
+    validate(&m)?;
+    let machine = machines::create(&state.db, &m).await?;
+    let location = format!("/api/v1/machines/{}", machine.id);
+    Ok((
+        StatusCode::CREATED,
+        [(header::LOCATION, location)],
+        Json(machine),
+    ))
+}
+
+#[utoipa::path(get, path = "/api/v1/machines", tag = "machines",
+    params(ListParams),
+    responses(
+        (status = 200, description = "A page of machines, newest first", body = MachineList),
+        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
+        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+    ))]
+pub async fn list(
+    State(state): State<AppState>,
+    params: Result<Query<ListParams>, QueryRejection>,
+) -> Result<Json<MachineList>, ApiError> {
+    let Query(params) = params
+        .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
+    let limit = params.limit.unwrap_or(50);
+    if !(1..=1000).contains(&limit) {
+        return Err(InputError::invalid("out_of_range", "limit", "limit must be 1 to 1000").into());
+    }
+    let offset = params.offset.unwrap_or(0);
+    if offset < 0 {
+        return Err(
+            InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
+        );
+    }
+    Ok(Json(machines::list(&state.db, limit, offset).await?))
+}
+
+#[utoipa::path(get, path = "/api/v1/machines/{id}", tag = "machines",
+    params(("id" = String, Path, description = "Machine id")),
+    responses(
+        (status = 200, description = "The machine, its sessions with the summary of their latest solution, and its coefficient versions", body = MachineDetail),
+        (status = 404, description = "No such machine", body = ErrorBody),
+    ))]
+pub async fn get(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<MachineDetail>, ApiError> {
+    Ok(Json(machines::get(&state.db, &id).await?))
+}
+
+#[utoipa::path(delete, path = "/api/v1/machines/{id}", tag = "machines",
+    params(("id" = String, Path, description = "Machine id")),
+    responses(
+        (status = 204, description = "Deleted with its coefficient versions; its sessions stay"),
+        (status = 404, description = "No such machine", body = ErrorBody),
+    ))]
+pub async fn delete(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<StatusCode, ApiError> {
+    machines::delete(&state.db, &id).await?;
+    Ok(StatusCode::NO_CONTENT)
+}
+
+/// The body of `POST /api/v1/machines/{id}/coefficients`.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PoolRequest {
+    /// Ids of stored sessions of this machine.
+    pub sessions: Vec<String>,
+    #[serde(default)]
+    pub options: PoolOptions,
+}
+
+#[utoipa::path(post, path = "/api/v1/machines/{id}/coefficients", tag = "machines",
+    params(("id" = String, Path, description = "Machine id")),
+    request_body = PoolRequest,
+    responses(
+        (status = 201, description = "A new coefficient version pooled from the sessions", body = StoredCoefficients),
+        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        (status = 404, description = "No such machine", body = ErrorBody),
+        (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
+    ))]
+pub async fn pool_coefficients(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    JsonBody(req): JsonBody<PoolRequest>,
+) -> Result<(StatusCode, Json<StoredCoefficients>), ApiError> {
+    if !machines::exists(&state.db, &id).await? {
+        return Err(ApiError::not_found(format!("no machine has the id '{id}'")));
+    }
+    if req.sessions.is_empty() {
+        return Err(invalid("sessions", "list at least one session of this machine").into());
+    }
+    for (i, s) in req.sessions.iter().enumerate() {
+        if req.sessions[..i].contains(s) {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                format!("sessions[{i}]"),
+                format!("session '{s}' is listed twice"),
+            )
+            .into());
+        }
+    }
+    let loaded = match machines::load_sessions(&state.db, &req.sessions).await? {
+        Ok(s) => s,
+        Err(i) => {
+            return Err(InputError::invalid(
+                "unknown_session",
+                format!("sessions[{i}]"),
+                format!("no session has the id '{}'", req.sessions[i]),
+            )
+            .into())
+        }
+    };
+    for (i, s) in loaded.iter().enumerate() {
+        if s.machine.as_deref() != Some(id.as_str()) {
+            return Err(InputError::invalid(
+                "other_machine",
+                format!("sessions[{i}]"),
+                format!(
+                    "session '{}' belongs to machine '{}', not '{id}'",
+                    req.sessions[i],
+                    s.machine.as_deref().unwrap_or("(none)")
+                ),
+            )
+            .into());
+        }
+    }
+    let named: Vec<(String, _)> = req.sessions.iter().cloned().zip(loaded).collect();
+    let options = req.options.clone();
+    let pooled = tokio::task::spawn_blocking(move || pool::pool(&named, &options))
+        .await
+        .map_err(|e| ApiError::internal(&e))??;
+    let body = match serde_json::to_value(&pooled).map_err(|e| ApiError::internal(&e))? {
+        serde_json::Value::Object(mut m) => {
+            m.remove("sessions");
+            m
+        }
+        _ => return Err(ApiError::internal(&"pooled coefficients are not an object")),
+    };
+    let stored = machines::store_coefficients(&state.db, &id, &pooled.sessions, body).await?;
+    Ok((StatusCode::CREATED, Json(stored)))
+}
+
+/// `?version=n`.
+#[derive(Debug, Deserialize, IntoParams)]
+#[serde(deny_unknown_fields)]
+pub struct VersionParams {
+    /// A version number; the latest when absent.
+    pub version: Option<i64>,
+}
+
+#[utoipa::path(get, path = "/api/v1/machines/{id}/coefficients", tag = "machines",
+    params(("id" = String, Path, description = "Machine id"), VersionParams),
+    responses(
+        (status = 200, description = "The coefficient version asked for, or the latest", body = StoredCoefficients),
+        (status = 404, description = "No such machine or version", body = ErrorBody),
+    ))]
+pub async fn get_coefficients(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    params: Result<Query<VersionParams>, QueryRejection>,
+) -> Result<Json<StoredCoefficients>, ApiError> {
+    let Query(params) = params
+        .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
+    match machines::coefficients(&state.db, &id, params.version).await? {
+        Ok(c) => Ok(Json(c)),
+        Err(Missing::Machine) => Err(ApiError::not_found(format!("no machine has the id '{id}'"))),
+        Err(Missing::Version) => Err(ApiError::not_found(format!(
+            "machine '{id}' has no coefficient version {}",
+            params.version.unwrap_or_default()
+        ))
+        .with_field("version")),
+        Err(Missing::NoVersions) => Err(ApiError::not_found(format!(
+            "machine '{id}' has no stored coefficients yet: POST /api/v1/machines/{id}/coefficients"
+        ))),
+    }
+}
+
+/// Resolve a solve's `coefficients_from` into `influence_coefficients` in the
+/// session's conventions, and name the version used. `name_field` puts the
+/// option paths (`options.coefficients_from.…`) in terms of the posted body.
+pub async fn resolve(
+    state: &AppState,
+    conventions: Conventions,
+    mut options: SolveOptions,
+    name_field: fn(InputError) -> InputError,
+) -> Result<SolveOptions, ApiError> {
+    let Some(from) = options.coefficients_from.clone() else {
+        return Ok(options);
+    };
+    let fail = |e: InputError| -> ApiError { name_field(e).into() };
+    if options.influence_coefficients.is_some() {
+        return Err(fail(InputError::invalid(
+            "conflicting_options",
+            "options.influence_coefficients",
+            "give influence_coefficients or coefficients_from, not both",
+        )));
+    }
+    let stored = match machines::coefficients(&state.db, &from.machine, from.version).await? {
+        Ok(s) => s,
+        Err(Missing::Machine) => {
+            return Err(fail(InputError::invalid(
+                "unknown_machine",
+                "options.coefficients_from.machine",
+                format!("no machine has the id '{}'", from.machine),
+            )))
+        }
+        Err(Missing::Version) => {
+            return Err(fail(InputError::invalid(
+                "unknown_version",
+                "options.coefficients_from.version",
+                format!(
+                    "machine '{}' has no coefficient version {}",
+                    from.machine,
+                    from.version.unwrap_or_default()
+                ),
+            )))
+        }
+        Err(Missing::NoVersions) => {
+            return Err(fail(InputError::invalid(
+                "unknown_version",
+                "options.coefficients_from.machine",
+                format!("machine '{}' has no stored coefficients yet", from.machine),
+            )))
+        }
+    };
+    let mut body = stored.body.clone();
+    body.insert("sessions".into(), serde_json::json!(stored.sessions));
+    let pooled: Pooled = serde_json::from_value(serde_json::Value::Object(body))
+        .map_err(|e| ApiError::internal(&e))?;
+    options.influence_coefficients = Some(pool::convert(
+        &pooled.influence_coefficients,
+        pooled.conventions,
+        conventions,
+    ));
+    options.coefficients_from = Some(crate::balancing::model::CoefficientsFrom {
+        machine: from.machine,
+        version: Some(stored.version),
+    });
+    Ok(options)
+}

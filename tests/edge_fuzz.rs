@@ -171,9 +171,26 @@ async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
     );
 
     let session = example("pump-two-plane-exact.json")["session"].clone();
+    // `{id}` is a stored session's id, or under /api/v1/machines the id of a
+    // machine that owns the session and has a coefficient version pooled from
+    // it, so that every kind of resource can be reached.
+    const MACHINE: &str = "FUZZ-M1";
+    let mut session = session;
+    session["machine"] = json!(MACHINE);
     let store = || async {
         let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
-        created["id"].as_str().expect("stored").to_string()
+        let id = created["id"].as_str().expect("stored").to_string();
+        let machine = json!({"id": MACHINE, "name": "fuzzed machine"});
+        let (status, _, _) = post(&client, &server.url("/api/v1/machines"), &machine).await;
+        assert!(
+            status == 201 || status == 409,
+            "the machine is stored: {status}"
+        );
+        let pool = json!({"sessions": [id]});
+        let url = server.url(&format!("/api/v1/machines/{MACHINE}/coefficients"));
+        let (status, _, answer) = post(&client, &url, &pool).await;
+        assert_eq!(status, 201, "coefficients pooled: {answer}");
+        id
     };
     let mut id = store().await;
     let run_ids: Vec<String> = session["runs"]
@@ -196,7 +213,13 @@ async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
             .path
             .replace(
                 "{id}",
-                &encode(&if real { id.clone() } else { odd_id(&mut rng) }),
+                &encode(&if !real {
+                    odd_id(&mut rng)
+                } else if op.path.starts_with("/api/v1/machines/") {
+                    MACHINE.to_string()
+                } else {
+                    id.clone()
+                }),
             )
             .replace(
                 "{run_id}",

@@ -147,3 +147,42 @@ fn without_coefficients_a_rotor_and_radii_are_needed_and_named() {
     let e = run(&s).unwrap_err();
     assert_eq!((e.code, e.field.as_deref()), ("no_basis", Some("rotor")));
 }
+
+#[test]
+fn a_reference_run_with_supplied_coefficients_is_sized_from_them_not_from_the_rotor() {
+    for seed in [11, 12, 13] {
+        let (s, w, y0) = session_value(seed, true, false);
+        let ids = fit_support::row_ids(w.nrows());
+        // The exact coefficients, as a solution would give them (lag, against
+        // rotation: 1 g at angle 0 is the internal weight 1).
+        let mut list = Vec::new();
+        for (a, (speed, sensor)) in ids.iter().enumerate() {
+            for j in 0..w.ncols() {
+                list.push(
+                    json!({"speed_rpm": speed, "sensor": sensor, "plane": format!("P{j}"),
+                    "amplitude_per_g": w[(a, j)].norm(),
+                    "phase_deg": (-w[(a, j)].arg().to_degrees()).rem_euclid(360.0)}),
+                );
+            }
+        }
+        let options: SolveOptions =
+            serde_json::from_value(json!({"influence_coefficients": list})).unwrap();
+        let session: Session = serde_json::from_value(s).unwrap();
+        let out = suggest(&session, &options, None).unwrap();
+        assert_eq!(out.len(), w.ncols());
+        for (j, sug) in out.iter().enumerate() {
+            assert_eq!(sug.basis, Basis::Coefficients, "seed {seed} plane {j}");
+            let t = weight(sug.mass_g, sug.angle_deg);
+            let change = (w.column(j) * t).norm() / y0.norm();
+            assert!(
+                (0.20..=0.45).contains(&change),
+                "seed {seed} plane {j}: {change}"
+            );
+            // It lowers the vibration.
+            assert!(
+                (&y0 + w.column(j) * t).norm() < y0.norm(),
+                "seed {seed} plane {j}"
+            );
+        }
+    }
+}

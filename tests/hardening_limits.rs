@@ -160,8 +160,12 @@ async fn the_largest_requests_stay_within_the_memory_budget() {
     let (status, _, created) = post(&client, &server.url("/api/v1/sessions"), &worst).await;
     assert_eq!(status, 201, "{created}");
     let id = created["id"].as_str().unwrap();
-    let (status, _, _) =
-        common::send(client.post(server.url(&format!("/api/v1/sessions/{id}/solutions")))).await;
+    let (status, _, _) = common::send(
+        client
+            .post(server.url(&format!("/api/v1/sessions/{id}/solutions")))
+            .header("content-type", "application/json"),
+    )
+    .await;
     assert_eq!(status, 201);
 
     let peak = server.peak_rss_bytes();

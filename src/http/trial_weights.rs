@@ -1,11 +1,13 @@
 //! `POST /api/v1/trial-weights`: a suggested trial weight per plane, before
 //! (or instead of a repeated) trial run.
 
+use axum::extract::State;
 use axum::Json;
 
 use super::error::{ApiError, ErrorBody};
 use super::extract::JsonBody;
 use super::solve::within_solve_request;
+use super::AppState;
 use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
 
 #[utoipa::path(post, path = "/api/v1/trial-weights", tag = "solve",
@@ -13,7 +15,7 @@ use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
     description = "A trial weight per selected plane that should move the 1X vibration by about 30 % \
 (the change field practice asks of a trial run, e.g. Acoem's 'Balancing How To #2: selecting a proper trial weight'). \
 The session may hold only its reference run.\n\n\
-basis `coefficients` (the session's own trial runs determine the influence coefficients): \
+basis `coefficients` (coefficients supplied in the options as `influence_coefficients`, a machine's stored ones by `coefficients_from`, or those the session's own trial runs determine): \
 mass m = 0.3·‖G·Y0‖/‖G·W_j‖ over the selected rows (row weights G), so the vibration moves by 30 % \
 (at least one row by 30 % or more), at the angle that lowers it most; `expected_change_pct` is that \
 change in percent for the weight given.\n\n\
@@ -32,8 +34,13 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
         (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
     ))]
 pub async fn trial_weights(
+    State(state): State<AppState>,
     JsonBody(req): JsonBody<TrialRequest>,
 ) -> Result<Json<TrialResponse>, ApiError> {
-    let suggestions = suggest(&req.session, &req.options, None).map_err(within_solve_request)?;
+    // Stored coefficients (`coefficients_from`) are read here, as for a solve.
+    let conventions = req.session.conventions.unwrap_or_default();
+    let options =
+        super::machines::resolve(&state, conventions, req.options, within_solve_request).await?;
+    let suggestions = suggest(&req.session, &options, None).map_err(within_solve_request)?;
     Ok(Json(TrialResponse { suggestions }))
 }

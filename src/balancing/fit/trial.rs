@@ -123,7 +123,14 @@ pub fn suggest(
     let checked = check(session)?;
     let selection = select(&checked, options)?;
     let conv = checked.conventions;
-    let w = coefficients.or_else(|| influence_matrix(&checked).ok());
+    // Coefficients given by the caller, else supplied in the options (v2
+    // `influence_coefficients`, or a machine's stored ones resolved by the
+    // service), else those the session's own trial runs determine.
+    let supplied = match coefficients {
+        Some(w) => Some(w),
+        None => crate::balancing::job::supplied::resolve(&checked, options)?.map(|s| s.w),
+    };
+    let w = supplied.or_else(|| influence_matrix(&checked).ok());
     let y = DVector::from_fn(selection.rows.len(), |i, _| {
         checked.y[(selection.rows[i], 0)] * selection.weights[i]
     });

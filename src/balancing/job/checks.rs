@@ -22,26 +22,7 @@ use crate::balancing::validate::Checked;
 /// trial against the reference run (column 0).
 pub fn data(checked: &Checked, noise: Noise) -> Data {
     let conv = checked.conventions;
-    let cov = (0..checked.rows.len())
-        .map(|a| {
-            (0..checked.runs.len())
-                .map(|k| {
-                    let samples: Option<Vec<Complex64>> =
-                        checked.reading(a, k).samples.as_ref().map(|s| {
-                            s.iter()
-                                .map(|x| reading_in(conv, x.amplitude, x.phase_deg))
-                                .collect()
-                        });
-                    reading_noise(
-                        checked.y[(a, k)],
-                        samples.as_deref(),
-                        noise.amplitude_pct,
-                        noise.phase_deg,
-                    )
-                })
-                .collect()
-        })
-        .collect();
+    let cov = crate::balancing::uncertainty::apply::reading_covariances(checked, noise);
     let trials = (1..checked.runs.len())
         .map(|k| Trial {
             col: k,

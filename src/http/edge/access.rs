@@ -123,6 +123,7 @@ const COMPUTE_ONLY: &[&str] = &[
     "/api/v1/identify/rotor",
     "/api/v1/identify/free-decay",
     "/api/v1/identify/model",
+    "/api/v1/residual-unbalance",
 ];
 
 /// Whether a request may change the store (any other method than a read,

@@ -13,16 +13,15 @@ use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 
 use super::linear::{self, Data, Source, Trial};
-use crate::balancing::phasor::{reading_in, reading_out};
+use crate::balancing::phasor::reading_out;
 use crate::balancing::solution::{RunCheck, RunCheckRow, Warning};
-use crate::balancing::uncertainty::{amplitude_95, reading_noise, Noise};
+use crate::balancing::uncertainty::{amplitude_95, reading_covariances, Noise};
 use crate::balancing::validate::Checked;
 
 /// The session's readings as [`Data`]: columns in `checked.runs` order, every
 /// trial against the reference run (column 0).
 pub fn data(checked: &Checked, noise: Noise) -> Data {
-    let conv = checked.conventions;
-    let cov = crate::balancing::uncertainty::apply::reading_covariances(checked, noise);
+    let cov = reading_covariances(checked, noise);
     let trials = (1..checked.runs.len())
         .map(|k| Trial {
             col: k,

@@ -108,25 +108,40 @@ impl Page {
         default: i64,
         max: i64,
     ) -> Result<(i64, i64), ApiError> {
-        let Query(p) = params
-            .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
-        let limit = p.limit.unwrap_or(default);
-        if !(1..=max).contains(&limit) {
-            return Err(InputError::invalid(
-                "out_of_range",
-                "limit",
-                format!("limit must be 1 to {max}"),
-            )
-            .into());
-        }
-        let offset = p.offset.unwrap_or(0);
-        if offset < 0 {
-            return Err(
-                InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
-            );
-        }
-        Ok((limit, offset))
+        let Query(p) = params.map_err(invalid_query)?;
+        page_bounds(p.limit, p.offset, default, max)
     }
+}
+
+/// A query string that does not parse: 400 with the contract's body.
+pub fn invalid_query(r: QueryRejection) -> ApiError {
+    ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text())
+}
+
+/// `limit` 1 to `max` (default `default`) and `offset` 0 or more (default 0),
+/// or the contract's error naming the parameter: the one rule of every paged list.
+pub fn page_bounds(
+    limit: Option<i64>,
+    offset: Option<i64>,
+    default: i64,
+    max: i64,
+) -> Result<(i64, i64), ApiError> {
+    let limit = limit.unwrap_or(default);
+    if !(1..=max).contains(&limit) {
+        return Err(InputError::invalid(
+            "out_of_range",
+            "limit",
+            format!("limit must be 1 to {max}"),
+        )
+        .into());
+    }
+    let offset = offset.unwrap_or(0);
+    if offset < 0 {
+        return Err(
+            InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
+        );
+    }
+    Ok((limit, offset))
 }
 
 /// `X-Total-Count`: how many items the paged list has in all.

@@ -105,18 +105,8 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<SessionList>, ApiError> {
-    let Query(params) = params
-        .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
-    let limit = params.limit.unwrap_or(50);
-    if !(1..=1000).contains(&limit) {
-        return Err(InputError::invalid("out_of_range", "limit", "limit must be 1 to 1000").into());
-    }
-    let offset = params.offset.unwrap_or(0);
-    if offset < 0 {
-        return Err(
-            InputError::invalid("out_of_range", "offset", "offset must be 0 or more").into(),
-        );
-    }
+    let Query(params) = params.map_err(super::headers::invalid_query)?;
+    let (limit, offset) = super::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
     Ok(Json(db::sessions::list(&state.db, limit, offset).await?))
 }
 

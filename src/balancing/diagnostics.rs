@@ -77,10 +77,10 @@ pub fn undetermined_planes(a: &DMatrix<Complex64>) -> Vec<bool> {
     if a.nrows() < q {
         return vec![true; q];
     }
-    let svd = s.svd(false, true);
-    let Some(v_t) = svd.v_t else { return out };
-    let smax = svd.singular_values.max();
-    for (i, &sv) in svd.singular_values.iter().enumerate() {
+    // Through the QR of a tall matrix (`factor::right_svd`, issue 15).
+    let (singular_values, v_t) = super::factor::right_svd(&s);
+    let smax = singular_values.max();
+    for (i, &sv) in singular_values.iter().enumerate() {
         if sv <= UNDETERMINED_TOLERANCE * smax {
             for (j, flag) in out.iter_mut().enumerate() {
                 *flag |= v_t[(i, j)].norm() > 1e-6;
@@ -99,7 +99,7 @@ pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
             col /= Complex64::from(norm);
         }
     }
-    let sv = s.singular_values();
+    let sv = super::factor::singular_values(&s);
     let (max, min) = (sv.max(), sv.min());
     if max == 0.0 {
         return 1e16;

@@ -13,6 +13,7 @@ pub mod acceptance;
 pub mod conic;
 pub mod diagnostics;
 pub mod error;
+pub mod factor;
 pub mod fit;
 pub mod influence;
 pub mod job;

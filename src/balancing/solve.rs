@@ -6,6 +6,7 @@ use num_complex::Complex64;
 
 use super::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD};
 use super::error::InputError;
+use super::factor::ThinSvd;
 use super::influence::influence_matrix;
 use super::model::{Session, SolveOptions};
 use super::report;
@@ -58,10 +59,10 @@ pub fn least_squares(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
 ) -> Result<DVector<Complex64>, InputError> {
-    let svd = a.clone().svd(true, true);
-    let eps = 1e-13 * svd.singular_values.max();
-    svd.solve(&(-b), eps)
-        .map_err(|e| InputError::unsolvable("solver_failed", format!("least squares failed: {e}")))
+    // The thin SVD through QR (`factor`): the same answer as an SVD of the
+    // tall `A`, in a fraction of the time on many rows (issue 15).
+    let svd = ThinSvd::of(a);
+    Ok(svd.solve(&(-b), 1e-13 * svd.max()))
 }
 
 /// The correction for the weighted problem, with any warnings the method adds.
@@ -87,7 +88,13 @@ fn correction(
 /// Solve a session: influence coefficients, corrections, predicted residual,
 /// diagnostics, in the session's conventions.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
-    let checked = check(session)?;
+    solve_checked(check(session)?, options)
+}
+
+/// [`solve`] of a session already validated: `checked` is `check(session)`
+/// (a caller that validated the session for its own use need not pay twice).
+pub fn solve_checked(checked: Checked, options: &SolveOptions) -> Result<Solution, InputError> {
+    let session = checked.session;
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
     let supplied = super::job::supplied::resolve(&checked, options)?;
     let w = match &supplied {

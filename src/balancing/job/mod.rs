@@ -52,7 +52,11 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
         ),
     };
     let rebased = from.map(|r| rebase(session, r));
-    let mut solution = one_shot::solve(rebased.as_ref().unwrap_or(session), options)?;
+    // Validated once: the session as given is the one solved unless rebased.
+    let mut solution = match &rebased {
+        Some(r) => one_shot::solve(r, options)?,
+        None => one_shot::solve_checked(checked.clone(), options)?,
+    };
 
     if let Some(r) = from {
         let conv = checked.conventions;

@@ -11,6 +11,8 @@
 use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 
+use crate::balancing::factor::ThinSvd;
+
 /// Singular values below this fraction of the largest count as zero (as in the solver).
 const RANK_TOLERANCE: f64 = 1e-10;
 
@@ -44,31 +46,11 @@ pub struct Propagation {
     pub effect_sd: DMatrix<f64>,
 }
 
-/// `(A⁺, (AᴴA)⁺)` from the SVD of `A`, never forming `AᴴA` itself.
+/// `(A⁺, (AᴴA)⁺)` from the SVD of `A`, never forming `AᴴA` itself; the thin
+/// SVD goes through the QR of a tall `A` (`factor`, issue 15).
 pub(super) fn svd_parts(a: &DMatrix<Complex64>) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
-    let (m, q) = a.shape();
-    let mut pinv = DMatrix::zeros(q, m);
-    let mut gram_inv = DMatrix::zeros(q, q);
-    if m == 0 || q == 0 {
-        return (pinv, gram_inv);
-    }
-    let svd = a.clone().svd(true, true);
-    let (Some(u), Some(v_t)) = (svd.u, svd.v_t) else {
-        return (pinv, gram_inv);
-    };
-    let smax = svd.singular_values.max();
-    for (i, &s) in svd.singular_values.iter().enumerate() {
-        if s <= RANK_TOLERANCE * smax || s == 0.0 {
-            continue;
-        }
-        let v = v_t.row(i).adjoint();
-        // Multiply by real reciprocals: a complex division squares its
-        // divisor's modulus, which underflows to 0 (then NaN) for the tiny
-        // singular values of readings near 1e-100.
-        pinv += &v * u.column(i).adjoint() * Complex64::from(1.0 / s);
-        gram_inv += &v * v.adjoint() * Complex64::from((1.0 / s).powi(2));
-    }
-    (pinv, gram_inv)
+    let svd = ThinSvd::of(a);
+    svd.pinv_and_gram_inv(RANK_TOLERANCE * svd.max())
 }
 
 /// Second moments of a complex error `z`: `k = E[z z̄]` and the pseudo-
@@ -206,8 +188,8 @@ pub fn propagate(
     let b_vec: Vec<Complex64> = (0..m).map(|i| -r[i] * row_weights[i]).collect();
     let xi = DMatrix::from_fn(q, runs, |j, k| g_omega[k][j]);
     let zero = Complex64::from(0.0);
-    let mut k_mat;
-    let mut j_mat;
+    let k_mat;
+    let j_mat;
     {
         let s1 = DMatrix::from_fn(m, 1, |i, _| {
             Complex64::from(
@@ -241,13 +223,6 @@ pub fn propagate(
         let s3 = DMatrix::from_fn(m, runs, |i, k| {
             mom[used_rows[i]][k].0 * lambda[k] * b_vec[i]
         });
-        let scaled = |d: &DMatrix<Complex64>| {
-            let mut x = a_vec.clone();
-            for (i, mut col) in x.column_iter_mut().enumerate() {
-                col *= d[(i, 0)];
-            }
-            x
-        };
         let xi_scaled = |d: &[f64]| {
             let mut x = xi.clone();
             for (k, mut col) in x.column_iter_mut().enumerate() {
@@ -255,17 +230,29 @@ pub fn propagate(
             }
             x
         };
+        // a diag(s1) aᴴ + k3 + k3ᴴ as X + Xᴴ with X = a (diag(s1/2) aᴴ + p3 ξᴴ),
+        // and the same for J with transposes: one q × rows × q product each
+        // instead of three (issue 15). diag(s1) is real and diag(p1) enters
+        // a symmetric form, so halving it on both sides is exact.
+        let mut mk = p3 * xi.adjoint();
+        let mut mj = s3 * xi.transpose();
+        for i in 0..m {
+            let (half_s, half_p) = (s1[(i, 0)] * 0.5, p1[(i, 0)] * 0.5);
+            for j in 0..q {
+                let aij = a_vec[(j, i)];
+                mk[(i, j)] += half_s * aij.conj();
+                mj[(i, j)] += half_p * aij;
+            }
+        }
         let xs = xi_scaled(&s2);
-        k_mat = scaled(&s1) * a_vec.adjoint() + &xs * xs.adjoint();
-        let k3 = &a_vec * (p3 * xi.adjoint());
-        k_mat += &k3 + k3.adjoint();
+        let ak = &a_vec * mk;
+        k_mat = &ak + ak.adjoint() + &xs * xs.adjoint();
         let mut xp = xi.clone();
         for (k, mut col) in xp.column_iter_mut().enumerate() {
             col *= p2[k];
         }
-        j_mat = scaled(&p1) * a_vec.transpose() + xp * xi.transpose();
-        let j3 = &a_vec * (s3 * xi.transpose());
-        j_mat += &j3 + j3.transpose();
+        let aj = &a_vec * mj;
+        j_mat = &aj + aj.transpose() + xp * xi.transpose();
     }
     let correction_full = real_cov_full(&k_mat, &j_mat);
     let correction = (0..q)

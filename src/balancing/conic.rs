@@ -13,6 +13,7 @@ use super::error::InputError;
 use super::model::Objective;
 
 mod active_set;
+mod barrier;
 mod program;
 pub mod wiring;
 

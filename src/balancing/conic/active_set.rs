@@ -15,6 +15,7 @@ use std::time::Instant;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
+use super::barrier;
 use super::program::solve_on;
 use super::Limits;
 use crate::balancing::error::InputError;
@@ -42,7 +43,7 @@ pub(super) fn min_max(
     if rows <= first + batch {
         // Too few rows for a second round to pay off: one program on all.
         let all: Vec<usize> = (0..rows).collect();
-        return solve_on(a, b, Objective::MinMax, bounds, &all, limits);
+        return solve(a, b, bounds, &all, limits);
     }
     let start = Instant::now();
     let mut working = first_rows(a, b, first);
@@ -66,7 +67,7 @@ pub(super) fn min_max(
             time_limit_s: left,
             ..limits
         };
-        let (y, it, status) = solve_on(a, b, Objective::MinMax, bounds, &working, round)?;
+        let (y, it, status) = solve(a, b, bounds, &working, round)?;
         iterations += it;
         let r = b + a * DVector::from_column_slice(&y);
         let t = working.iter().map(|&i| r[i].norm()).fold(0.0, f64::max);
@@ -83,6 +84,21 @@ pub(super) fn min_max(
             in_set[i] = true;
             working.push(i);
         }
+    }
+}
+
+/// The min-max program on `rows`: the dense barrier method, or Clarabel's
+/// one-cone-per-row program where the barrier's arithmetic fails.
+fn solve(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    bounds: &[(usize, f64)],
+    rows: &[usize],
+    limits: Limits,
+) -> Result<(Vec<Complex64>, u32, String), InputError> {
+    match barrier::min_max(a, b, bounds, rows, limits)? {
+        Some((y, steps)) => Ok((y, steps, "Solved".into())),
+        None => solve_on(a, b, Objective::MinMax, bounds, rows, limits),
     }
 }
 

@@ -14,12 +14,7 @@ OLD=$1; NEW=$2; ROUNDS=${3:-5}; DURATION=${4:-8s}
 ADDR=127.0.0.1:${PORT:-18081}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-python3 - "$WORK" <<'PY'
-import json, sys
-ex = json.load(open("tests/data/examples/pump-two-plane-exact.json"))
-json.dump({"session": ex["session"], "options": ex["options"]}, open(sys.argv[1] + "/solve.json", "w"))
-json.dump(ex["session"], open(sys.argv[1] + "/session.json", "w"))
-PY
+python3 benches/bodies.py "$WORK"
 
 # One wrk run against a fresh server: prints requests/s.
 run() { # BIN PATH BODY STATUS

@@ -14,13 +14,11 @@ BIN=$1; LOAD=${2:-solve}; N=${3:-300}
 PORT=${PORT:-18082}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-python3 - "$WORK" <<'PY'
-import json, sys
-ex = json.load(open("tests/data/examples/pump-two-plane-exact.json"))
-json.dump({"session": ex["session"], "options": ex["options"]}, open(sys.argv[1] + "/solve.json", "w"))
-json.dump(ex["session"], open(sys.argv[1] + "/store.json", "w"))
-PY
-case $LOAD in solve) path=/api/v1/solve ;; store) path=/api/v1/sessions ;; esac
+python3 benches/bodies.py "$WORK"
+case $LOAD in
+  solve) path=/api/v1/solve; body=solve.json ;;
+  store) path=/api/v1/sessions; body=session.json ;;
+esac
 
 count() { # requests -> total instructions of the server's life
   rm -f "$WORK"/db.sqlite*
@@ -31,7 +29,7 @@ count() { # requests -> total instructions of the server's life
   until curl -fsS "http://127.0.0.1:$PORT/healthz" >/dev/null 2>&1; do
     i=$((i + 1)); [ "$i" -lt 600 ] || { cat "$WORK/log"; kill "$pid"; exit 1; }; sleep 0.2
   done
-  python3 - "$PORT" "$path" "$WORK/$LOAD.json" "$1" <<'PY'
+  python3 - "$PORT" "$path" "$WORK/$body" "$1" <<'PY'
 import http.client, sys
 port, path, body, n = sys.argv[1], sys.argv[2], open(sys.argv[3], "rb").read(), int(sys.argv[4])
 c = http.client.HTTPConnection("127.0.0.1", int(port))

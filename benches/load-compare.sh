@@ -19,6 +19,9 @@ python3 benches/bodies.py "$WORK"
 # One wrk run against a fresh server: prints requests/s.
 run() { # BIN PATH BODY STATUS
   rm -f "$WORK"/load.db*
+  if curl -fsS "http://$ADDR/healthz" >/dev/null 2>&1; then
+    echo "something already answers on $ADDR: set PORT" >&2; exit 1
+  fi
   RUST_LOG=${RUST_LOG:-info} "$1" serve --listen "$ADDR" --database "$WORK/load.db" \
     >"$WORK/server.log" 2>&1 &
   pid=$!

@@ -22,6 +22,9 @@ esac
 
 count() { # requests -> total instructions of the server's life
   rm -f "$WORK"/db.sqlite*
+  if curl -fsS "http://127.0.0.1:$PORT/healthz" >/dev/null 2>&1; then
+    echo "something already answers on port $PORT: set PORT" >&2; exit 1
+  fi
   valgrind --tool=callgrind --callgrind-out-file="$WORK/cg.out" "$BIN" serve \
     --listen "127.0.0.1:$PORT" --database "$WORK/db.sqlite" >"$WORK/log" 2>&1 &
   pid=$!

@@ -87,7 +87,16 @@ fn correction(
 /// Solve a session: influence coefficients, corrections, predicted residual,
 /// diagnostics, in the session's conventions.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
-    let checked = check(session)?;
+    solve_checked(session, check(session)?, options)
+}
+
+/// [`solve`] of a session already validated (`checked` is `check(session)`):
+/// validation is a large share of a small solve, so it runs once per request.
+pub fn solve_checked<'a>(
+    session: &'a Session,
+    checked: Checked<'a>,
+    options: &SolveOptions,
+) -> Result<Solution, InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
     let supplied = super::job::supplied::resolve(&checked, options)?;
     let w = match &supplied {

@@ -51,11 +51,10 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
                 })?,
         ),
     };
-    let rebased = from.map(|r| rebase(session, r));
-    // Validated once: the session as given is the one solved unless rebased.
-    let mut solution = match &rebased {
-        Some(r) => one_shot::solve(r, options)?,
-        None => one_shot::solve_checked(checked.clone(), options)?,
+    let mut solution = match from {
+        // The session as posted is validated once, above.
+        None => one_shot::solve_checked(session, checked.clone(), options)?,
+        Some(r) => one_shot::solve(&rebase(session, r), options)?,
     };
 
     if let Some(r) = from {

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each browser test binary uses a different part of this module
 
 pub mod form;
+pub mod job;
 pub mod stand;
 
 use std::net::TcpListener;

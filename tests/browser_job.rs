@@ -13,121 +13,17 @@ mod browser;
 mod common;
 
 use browser::form::{self, field, type_into, type_run, type_setup, value_of};
-use browser::job::{message_for, predicted, scroll_to, shots, sideways, small_targets};
+use browser::job::{message_for, predicted, scroll_to, shots};
+use browser::scenes::{
+    machine_page_and_trim_from_stored_coefficients, multi_speed_job_shows_bode_plots,
+    the_form_weighs_little_and_asks_nothing_of_other_hosts,
+};
 use browser::stand::{example_session, Stand};
-use browser::Browser;
-use fantoccini::Locator;
+use browser::steps::{
+    fits_a_tablet, grid_header_and_actions_are_sticky, js, named, service_trim, solve, stored_id,
+    type_and_store, typed_mistakes_are_refused_with_the_reason,
+};
 use serde_json::{json, Value};
-
-const PROBE: &str = "probe";
-
-/// The run a check run stores, with its name.
-fn named(mut run: Value, id: &str) -> Value {
-    assert_eq!(run["id"], PROBE);
-    run["id"] = json!(id);
-    run
-}
-
-async fn js(b: &Browser, script: &str) -> Value {
-    b.client.execute(script, vec![]).await.expect("script runs")
-}
-
-/// Every message a speed list, a phase or a decimal comma can get is the one the rule states.
-async fn typed_mistakes_are_refused_with_the_reason(b: &Browser) {
-    let speeds = field("speeds");
-    let glued = message_for(b, &speeds, "1480,2950").await;
-    assert!(glued.contains("ambiguous"), "{glued}");
-    assert_eq!(message_for(b, &speeds, "1480, 2950").await, "");
-    assert_eq!(message_for(b, &speeds, "1480;2950").await, "");
-    let same = message_for(b, &speeds, "1480 1485").await;
-    assert!(same.contains("within 1 %"), "{same}");
-    // The rule is stated at the field, not only when it is broken.
-    let rule = b.text("fieldset.job .hint.rule").await;
-    assert!(rule.contains("“;”"), "{rule}");
-    let decimal = b.text("fieldset.job .decimal-rule").await;
-    assert!(decimal.contains("1,234 is refused"), "{decimal}");
-    let got = js(
-        b,
-        "return import('/static/js/num.js').then((m) => [m.parseSpeeds('1480, 2950').value, m.parseSpeeds('1480;2950').value, m.check('370', 'phase').error, m.check('-10', 'phase').error, m.check('1,234', 'amplitude').error, m.check('2,5', 'amplitude').value])",
-    )
-    .await;
-    assert_eq!(got[0], json!([1480, 2950]));
-    assert_eq!(got[1], json!([1480, 2950]));
-    assert_eq!(
-        got[2],
-        "phase in degrees, 0 to 360: 370° is more than a turn, the same place as 10°; type 10"
-    );
-    assert_eq!(
-        got[3],
-        "phase in degrees, 0 to 360: -10° is below 0, the same place as 350°; type 350"
-    );
-    assert_eq!(
-        got[4],
-        "1,234 could mean 1234 or 1.234: type it without the comma, or with a point"
-    );
-    assert_eq!(got[5], json!(2.5));
-    type_into(b, &speeds, "").await;
-}
-
-/// Type the cells of `run` into run column `k` with Tab and store it.
-async fn type_and_store(b: &Browser, session: &Value, k: usize, run: &Value) {
-    type_into(
-        b,
-        &field(&format!("runs[{k}].id")),
-        run["id"].as_str().unwrap(),
-    )
-    .await;
-    form::type_cells_with_tab(b, k, &form::cells(session, run)).await;
-    form::store(b).await;
-}
-
-async fn solve(b: &Browser) {
-    b.click("#step-runs button.go-solve").await;
-    b.click("#step-solve button.solve").await;
-    b.wait_for("#step-solve table.corrections").await;
-}
-
-/// The service's own trim from `from_run` of the stored session.
-async fn service_trim(stand: &Stand, id: &str, from_run: &str) -> Value {
-    let url = stand.server.url(&format!("/api/v1/sessions/{id}"));
-    let session: Value = reqwest::get(&url).await.unwrap().json().await.unwrap();
-    let session = session.get("session").cloned().unwrap_or(session);
-    reqwest::Client::new()
-        .post(stand.server.url("/api/v1/solve"))
-        .json(&json!({ "session": session, "options": { "from_run": from_run } }))
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap()
-}
-
-async fn stored_id(b: &Browser) -> String {
-    let hash = js(b, "return location.hash").await;
-    let hash = hash.as_str().unwrap();
-    let id = hash
-        .strip_prefix("#session=")
-        .and_then(|h| h.split('&').next())
-        .unwrap_or_else(|| panic!("no session in {hash}"));
-    id.to_string()
-}
-
-/// Touch targets and sideways scrolling at tablet width, on the step shown now.
-async fn fits_a_tablet(b: &Browser, what: &str) {
-    b.viewport(768, 1024).await;
-    assert_eq!(
-        small_targets(b).await,
-        json!([]),
-        "{what}: targets under 44 px"
-    );
-    let (over, culprits) = sideways(b).await;
-    assert!(
-        over <= 0,
-        "{what}: the page scrolls sideways by {over} px: {culprits}"
-    );
-    b.viewport(1280, 800).await;
-}
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
@@ -237,6 +133,7 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     form::store(b).await;
     let id = stored_id(b).await;
     shots(b, "job-runs").await;
+    grid_header_and_actions_are_sticky(b).await;
     fits_a_tablet(b, "runs").await;
 
     // Back and Forward move between the steps.
@@ -412,152 +309,4 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     multi_speed_job_shows_bode_plots(&stand).await;
     the_form_weighs_little_and_asks_nothing_of_other_hosts(b).await;
     stand.stop().await;
-}
-
-/// (b, i) The machine page, coefficients pooled, a trim job with only a zero run read from CSV.
-async fn machine_page_and_trim_from_stored_coefficients(stand: &Stand, truth: &Value) {
-    let b = &stand.browser;
-    // The rotor as found again, as on the first day: the stored coefficients must
-    // give the first answer (within what the other tab's corrected reading, 1074
-    // for 1073.16, and the rounded check readings move the pooled coefficients).
-    let as_found = &truth["runs"][0];
-    b.click("nav [data-step=\"machines\"]").await;
-    type_into(b, &field("machine.id"), "PUMP-1").await;
-    type_into(b, &field("machine.name"), "Cooling water pump 1").await;
-    b.click("button.create-machine").await;
-    b.wait_for("table.machine-jobs button.open-session").await;
-    b.click("button.pool").await;
-    b.wait_for("table.coeff-versions tbody tr").await;
-    b.wait_for("svg.trend").await;
-    shots(b, "job-machine").await;
-    fits_a_tablet(b, "machine page").await;
-    b.click("button.trim-job").await;
-    b.wait_until(
-        "the set-up of the machine's last job is copied",
-        "const e = document.querySelector('[data-field=\"planes[1].id\"]'); return !!e && e.value === 'outboard'",
-    )
-    .await;
-    assert_eq!(value_of(b, &field("machine")).await, "PUMP-1");
-    type_into(b, &field("name"), "PUMP-1 trim").await;
-    b.click("#step-setup button.next").await;
-    // The zero run read from a CSV file, a row per reading.
-    let mut csv = String::from("sensor;speed_rpm;amplitude;phase_deg\n");
-    for r in as_found["readings"].as_array().unwrap() {
-        csv.push_str(&format!(
-            "{};{};{};{}\n",
-            r["sensor"].as_str().unwrap(),
-            r["speed_rpm"],
-            r["amplitude"].to_string().replace('.', ","),
-            r["phase_deg"]
-        ));
-    }
-    let path = stand.dir.path().join("as-found.csv");
-    std::fs::write(&path, csv).unwrap();
-    b.wait_for("input.csv-file")
-        .await
-        .send_keys(path.to_str().unwrap())
-        .await
-        .unwrap();
-    let note = b.text(".banner.csv-result").await;
-    assert!(
-        note.starts_with("4 of 4 readings read") && note.contains("a row per reading"),
-        "{note}"
-    );
-    let first = as_found["readings"][0]["amplitude"].as_f64().unwrap();
-    let shown: f64 = value_of(b, &field("runs[0].readings[0].amplitude"))
-        .await
-        .parse()
-        .unwrap();
-    assert!((shown - first).abs() < 1e-9, "{shown} for {first}");
-    shots(b, "job-csv-import").await;
-    form::store(b).await;
-    b.click("#step-runs button.go-solve").await;
-    b.click("#step-solve button.solve").await;
-    b.wait_for("#step-solve table.corrections").await;
-    let report = js(
-        b,
-        "return document.querySelector('#step-report .report-coeffs').textContent",
-    )
-    .await;
-    let report = report.as_str().unwrap();
-    assert!(
-        report.contains("Stored coefficients of machine PUMP-1, version 1"),
-        "{report}"
-    );
-    shots(b, "job-trim-from-stored").await;
-}
-
-/// (f) A job over many speeds: a Bode and a polar plot per sensor, the polar filter.
-async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
-    let b = &stand.browser;
-    let example = common::example("compressor-multispeed-noisy.json");
-    let session = &example["session"];
-    let created: Value = reqwest::Client::new()
-        .post(stand.server.url("/api/v1/sessions"))
-        .json(session)
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
-    let id = created["id"].as_str().unwrap();
-    // A fresh page load (a new address differing only in its hash would keep the page).
-    b.client.goto("about:blank").await.unwrap();
-    b.client
-        .goto(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await
-        .unwrap();
-    b.wait_until(
-        "the multi-speed job is open",
-        "return document.querySelector('#job-title').textContent.includes('stored') && !document.querySelector('#step-solve').hidden",
-    )
-    .await;
-    b.click("#step-solve button.solve").await;
-    b.wait_for("#step-solve svg.bode").await;
-    let sensors = session["sensors"].as_array().unwrap().len();
-    let counts = js(
-        b,
-        "return [document.querySelectorAll('#step-solve svg.bode').length, document.querySelectorAll('#step-solve svg.nyquist').length, document.querySelectorAll('#step-solve svg.polar').length, document.querySelectorAll('#step-solve .identification').length]",
-    )
-    .await;
-    assert_eq!(counts[0], json!(sensors), "a Bode plot per sensor");
-    assert_eq!(
-        counts[1],
-        json!(sensors),
-        "a polar plot across speeds per sensor"
-    );
-    assert_eq!(counts[3], json!(1), "identification beside them");
-    // The polar plots per speed are filtered to one speed at a time.
-    assert_eq!(counts[2], json!(sensors));
-    scroll_to(b, ".bode-plots").await;
-    shots(b, "job-bode").await;
-    fits_a_tablet(b, "multi-speed corrections").await;
-}
-
-/// The page weighs under 250 kB and asks nothing of any other host.
-async fn the_form_weighs_little_and_asks_nothing_of_other_hosts(b: &Browser) {
-    let got = js(
-        b,
-        "const all = performance.getEntriesByType('resource'); \
-         const nav = performance.getEntriesByType('navigation')[0]; \
-         return [all.filter((e) => !e.name.startsWith(location.origin + '/')).map((e) => e.name), \
-                 all.filter((e) => e.initiatorType !== 'fetch').reduce((s, e) => s + e.decodedBodySize, nav.decodedBodySize), \
-                 all.filter((e) => e.initiatorType !== 'fetch').length]",
-    )
-    .await;
-    assert_eq!(got[0], json!([]), "requests outside the service");
-    let bytes = got[1].as_f64().unwrap();
-    assert!(
-        bytes > 50_000.0 && bytes < 250_000.0,
-        "page weight {bytes} bytes"
-    );
-    assert!(
-        got[2].as_u64().unwrap() > 10,
-        "the form's files were counted: {got}"
-    );
-    b.client
-        .find(Locator::Css("body"))
-        .await
-        .expect("the page is still there");
 }

@@ -11,7 +11,7 @@ const PAD_L = 52;
 const PAD_R = 12;
 const AMP_H = 150;
 const PH_H = 90;
-const GAP = 26;
+const GAP = 34;
 const SERIES = [
   { key: "found", colour: "#1d4ed8", text: "as found" },
   { key: "after", colour: "#15803d", text: "predicted after correction", dash: "6 3" },
@@ -64,8 +64,8 @@ export function bodePlot({ sensor, unit, phase, series }) {
   }
   svg.append(s("text", { x: PAD_L, y: H - 4, class: "tick" }, `${fmt(lo, 0)} rpm`));
   svg.append(s("text", { x: W - PAD_R, y: H - 4, class: "tick", "text-anchor": "end" }, `${fmt(hi, 0)} rpm`));
-  svg.append(s("text", { x: 4, y: 10 + AMP_H / 2, class: "axis-title" }, "amp."));
-  svg.append(s("text", { x: 4, y: y0 + PH_H / 2, class: "axis-title" }, "phase"));
+  svg.append(s("text", { x: PAD_L + 4, y: 20, class: "axis-title" }, `amplitude, ${unitLabel(unit)}`));
+  svg.append(s("text", { x: PAD_L + 4, y: y0 - 6, class: "axis-title" }, "phase"));
   for (const line of series) {
     const pts = [...line.points].sort((a, b) => a.speed - b.speed);
     if (!pts.length) continue;

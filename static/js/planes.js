@@ -48,7 +48,7 @@ export function planePicture(plane, solution, correction, direction) {
   const [ax2, ay2] = at(110, "with_rotation", R + 16);
   svg.append(s("path", { d: `M${ax1.toFixed(1)},${ay1.toFixed(1)} A${R + 16},${R + 16} 0 0 1 ${ax2.toFixed(1)},${ay2.toFixed(1)}`, class: "rotation" }));
   svg.append(s("polygon", { points: `${ax2.toFixed(1)},${ay2.toFixed(1)} ${(ax2 + 2).toFixed(1)},${(ay2 - 10).toFixed(1)} ${(ax2 + 9).toFixed(1)},${(ay2 - 3).toFixed(1)}`, class: "rotation-head" }));
-  svg.append(s("text", { x: ax2 + 8, y: ay2 + 14, class: "label" }, "rotation"));
+  svg.append(s("text", { x: SIZE - 4, y: ay2 + 16, class: "label", "text-anchor": "end" }, "rotation"));
   places.forEach((angle, k) => {
     const [px, py] = at(angle, direction, R - 10);
     const [lx, ly] = at(angle, direction, R - 24);

@@ -5,7 +5,9 @@
 
 pub mod form;
 pub mod job;
+pub mod scenes;
 pub mod stand;
+pub mod steps;
 
 use std::net::TcpListener;
 use std::path::{Path, PathBuf};

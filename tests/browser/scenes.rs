@@ -71,6 +71,20 @@ pub async fn machine_page_and_trim_from_stored_coefficients(stand: &Stand, truth
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve table.corrections").await;
+    let shown = form::corrections_on_page(b).await;
+    let (_, expected) = example_session("pump-two-plane-exact.json");
+    let expected = expected["corrections"].as_array().unwrap();
+    assert_eq!(shown.len(), expected.len(), "{shown:?}");
+    for (want, (plane, mass, angle)) in expected.iter().zip(&shown) {
+        assert_eq!(want["plane"].as_str(), Some(plane.as_str()));
+        let dm = (mass - want["mass_g"].as_f64().unwrap()).abs();
+        assert!(dm <= 0.5, "{plane}: {mass} g from the stored coefficients");
+        let d = (angle - want["angle_deg"].as_f64().unwrap()).rem_euclid(360.0);
+        assert!(
+            d.min(360.0 - d) <= 1.0,
+            "{plane}: {angle}° from the stored coefficients"
+        );
+    }
     let report = js(
         b,
         "return document.querySelector('#step-report .report-coeffs').textContent",

@@ -90,11 +90,21 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field()
     type_into(b, &field("runs[1].weights[0].angle_deg"), "0").await;
     form::type_cells_with_tab(b, 1, &form::cells(&session, &session["runs"][1])).await;
     b.click("#step-runs button.store").await;
-    let at_field = format!(".field.bad:has({}) .msg", field("runs[1].id"));
+    // The other client changed the session: said first, the typed run kept.
+    b.wait_until(
+        "the change made elsewhere is reported",
+        "const e = document.querySelector('#step-runs .banner.error'); return !!e && e.textContent.includes('changed in another tab')",
+    )
+    .await;
+    b.click("#step-runs button.reload-session").await;
+    b.wait_for("#step-runs th.run[data-run=\"trial 1\"]").await;
+    b.click("#step-runs button.store").await;
+    // Its run now has the name this one was given: the clash is marked at the name.
+    let at_field = format!(".field.bad:has({}) .msg", field("runs[2].id"));
     let message = b.text(&at_field).await;
     assert!(
-        message.contains("already has a run"),
-        "server message at the run name: {message}"
+        message.contains("already has"),
+        "the name clash at the run name: {message}"
     );
     stand.stop().await;
 }
@@ -227,7 +237,11 @@ async fn typed_numbers_are_accepted_or_refused_as_the_table_says() {
         ("NaN", "phase", Err("not a number")),
         ("1e400", "amplitude", Err("number too large")),
         ("-1", "amplitude", Err("amplitude must be 0 or more")),
-        ("720", "phase", Err("phase in degrees, 0 to 360")),
+        (
+            "720",
+            "phase",
+            Err("phase in degrees, 0 to 360: 720° is more than a turn, the same place as 0°; type 0"),
+        ),
         ("0", "mass", Err("mass in grams, more than 0")),
         ("-5", "radius", Err("radius in mm, more than 0")),
         (

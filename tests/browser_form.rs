@@ -15,7 +15,17 @@ use serde_json::{json, Value};
 /// Solve from the runs step and compare the corrections on the page with the expected ones.
 async fn solve_and_compare(b: &Browser, expected: &Value) {
     b.click("#step-runs button.go-solve").await;
+    solve_and_compare_here(b, expected).await;
+}
+
+/// Solve on the corrections step and compare.
+async fn solve_and_compare_here(b: &Browser, expected: &Value) {
     b.click("#step-solve button.solve").await;
+    b.wait_until(
+        "the solve answers",
+        "return !!document.querySelector('#step-solve table.corrections') && !document.querySelector('#step-solve .trim')",
+    )
+    .await;
     let shown = form::corrections_on_page(b).await;
     let expected = expected["corrections"]
         .as_array()
@@ -184,7 +194,27 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         .expect("scrolls");
     b.screenshot("runs-check-entry-1280").await;
     form::store(b).await;
-    solve_and_compare(b, &expected).await;
+    // After the check run the solve starts from it: nothing to add, and the
+    // one weight per plane that replaces what is on is the first answer.
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    for want in expected["corrections"].as_array().unwrap() {
+        let plane = want["plane"].as_str().unwrap();
+        let words = b.text(&format!(".trim li[data-plane=\"{plane}\"]")).await;
+        let total = format!(
+            "one weight of {:.1} g at {:.1}°",
+            want["mass_g"].as_f64().unwrap(),
+            want["angle_deg"].as_f64().unwrap().rem_euclid(360.0)
+        );
+        assert!(
+            words.contains("nothing to add") && words.contains(&total),
+            "{words}"
+        );
+    }
+    // Corrected from the zero run instead, the first answer again.
+    b.click("details.options summary").await;
+    form::choose(b, "#step-solve select.from-run", "").await;
+    solve_and_compare_here(b, &expected).await;
     stand.stop().await;
 }
 

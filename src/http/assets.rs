@@ -31,12 +31,20 @@ const JS: &str = "text/javascript; charset=utf-8";
 static ASSETS: &[Asset] = &[
     asset!("index.html", "text/html; charset=utf-8"),
     asset!("style.css", "text/css; charset=utf-8"),
+    asset!("js/answer.js", JS),
     asset!("js/api.js", JS),
     asset!("js/app.js", JS),
+    asset!("js/bode.js", JS),
+    asset!("js/csv.js", JS),
     asset!("js/dom.js", JS),
     asset!("js/fields.js", JS),
+    asset!("js/keep.js", JS),
+    asset!("js/machines.js", JS),
     asset!("js/num.js", JS),
+    asset!("js/options.js", JS),
     asset!("js/picture.js", JS),
+    asset!("js/planes.js", JS),
+    asset!("js/plots.js", JS),
     asset!("js/polar.js", JS),
     asset!("js/report.js", JS),
     asset!("js/runs.js", JS),
@@ -45,6 +53,8 @@ static ASSETS: &[Asset] = &[
     asset!("js/solve.js", JS),
     asset!("js/state.js", JS),
     asset!("js/token.js", JS),
+    asset!("js/trial.js", JS),
+    asset!("js/words.js", JS),
 ];
 
 /// Scripts and styles from this origin only: even if user text ever reached

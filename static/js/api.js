@@ -14,8 +14,8 @@ export class ApiError extends Error {
   }
 }
 
-async function call(method, path, body, retried) {
-  const init = { method, headers: { Accept: "application/json" } };
+async function call(method, path, body, retried, extra) {
+  const init = { method, headers: { Accept: "application/json", ...((extra && extra.headers) || {}) } };
   // Every write says JSON, body or not: the service refuses writes without it,
   // so that no page elsewhere can change the store through this browser.
   if (method !== "GET") init.headers["Content-Type"] = "application/json";
@@ -43,7 +43,7 @@ async function call(method, path, body, retried) {
     const entered = await askToken(token ? "The service did not accept that access token. Enter another:" : "This fieldbal service needs an access token.");
     if (entered) {
       storeToken(entered);
-      return call(method, path, body, true);
+      return call(method, path, body, true, extra);
     }
   }
   if (resp.status === 401) storeToken(null);
@@ -51,6 +51,8 @@ async function call(method, path, body, retried) {
     const err = (data && data.error) || {};
     throw new ApiError(resp.status, err.code || `http_${resp.status}`, err.message || `The service answered ${resp.status}.`, err.field);
   }
+  // With `full`, the caller also gets the entity tag (two tabs on one session).
+  if (extra && extra.full) return { data, etag: resp.headers.get("ETag") };
   return data;
 }
 
@@ -68,5 +70,15 @@ export const api = {
   addRun: (id, run) => call("POST", `/sessions/${encodeURIComponent(id)}/runs`, run),
   putRun: (id, runId, run) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run),
   solutions: (id) => call("GET", `/sessions/${encodeURIComponent(id)}/solutions`),
+  getSessionTagged: (id) => call("GET", `/sessions/${encodeURIComponent(id)}`, undefined, false, { full: true }),
+  getRunTagged: (id, runId) => call("GET", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, undefined, false, { full: true }),
+  putRunIfMatch: (id, runId, run, etag) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run, false, { headers: etag ? { "If-Match": etag } : {} }),
+  solveOnce: (session, options) => call("POST", "/solve", { session, options: options || {} }),
+  trialWeights: (session, options) => call("POST", "/trial-weights", { session, options: options || {} }),
+  identifyRotor: (session, options) => call("POST", "/identify/rotor", { session, options: options || {} }),
+  listMachines: () => call("GET", "/machines?limit=100"),
+  getMachine: (id) => call("GET", `/machines/${encodeURIComponent(id)}`),
+  createMachine: (machine) => call("POST", "/machines", machine),
+  poolCoefficients: (id, sessions) => call("POST", `/machines/${encodeURIComponent(id)}/coefficients`, { sessions }),
   solve: (id, options) => call("POST", `/sessions/${encodeURIComponent(id)}/solutions`, options || {}),
 };

@@ -1,17 +1,38 @@
 // The form's entry point: the steps of a balancing job, which one is shown,
-// and reopening a stored session from the address (`#session=ID`).
+// the browser's Back/Forward between them (each step is a history entry:
+// `#session=ID&step=runs`, `#step=setup`, `#machine=ID`), reopening a stored
+// session from the address, and work kept across a reload (keep.js).
 
 import { $, $$, replace, h } from "./dom.js";
 import { api, unwrapSession } from "./api.js";
 import { state, onChange, resetJob, loadSession } from "./state.js";
+import { keep, keepNow, kept, forget } from "./keep.js";
 import { renderSetup } from "./setup.js";
 import { renderRuns, newDraft } from "./runs.js";
 import { renderSolve } from "./solve.js";
 import { renderReport } from "./report.js";
 import { renderSessions } from "./sessions.js";
+import { renderMachines } from "./machines.js";
 
-const STEPS = ["setup", "runs", "solve", "report", "sessions"];
+const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines"];
 let current = "setup";
+
+/** The address of a step of the job shown now. */
+function hashFor(step) {
+  if (step === "machines" && state.machineId) return `#machine=${encodeURIComponent(state.machineId)}`;
+  if (state.id) return `#session=${encodeURIComponent(state.id)}&step=${step}`;
+  return `#step=${step}`;
+}
+
+/** `{session, step, machine}` read from an address. */
+function parseHash(hash) {
+  const out = {};
+  for (const part of hash.replace(/^#/, "").split("&")) {
+    const [k, v] = part.split("=");
+    if (k && v !== undefined) out[k] = decodeURIComponent(v);
+  }
+  return out;
+}
 
 /** Make `step` the visible one, keeping what it shows (and any marks in it). */
 function reveal(step) {
@@ -24,8 +45,9 @@ function reveal(step) {
   }
 }
 
-/** Show `step`, drawn afresh from the job's state. */
-function show(step) {
+/** Show `step`, drawn afresh from the job's state; a new history entry unless `push` is false. */
+function show(step, push = true) {
+  if (!STEPS.includes(step)) step = "setup";
   reveal(step);
   const root = $(`#step-${step}`);
   if (step === "setup") renderSetup(root, () => show("runs"));
@@ -33,12 +55,31 @@ function show(step) {
     if (setupReady()) renderRuns(root, () => show("solve"));
     else replace(root, h("h2", {}, "2 · Runs"), h("p", { class: "note" }, "Finish the set-up first: a name, the speeds, and a name for every plane and sensor."), h("button", { type: "button", class: "primary", onclick: () => show("setup") }, "← Back to the set-up"));
   }
-  if (step === "solve") renderSolve(root, () => { newDraft("check", state.solution.corrections.map((c) => ({ plane: c.plane, mass_g: Number(c.mass_g.toFixed(1)), angle_deg: Number(c.angle_deg.toFixed(1)) }))); show("runs"); });
+  if (step === "solve") renderSolve(root, (weights, fromRun) => { newDraft("check", weights, fromRun); show("runs"); });
   if (step === "sessions") renderSessions(root, open, open);
+  if (step === "machines") renderMachines(root, { openSession: open, newJob: startJob, showMachine });
   // The report is kept current so that printing from any step prints it.
   renderReport($("#step-report"));
   updateHeader();
+  const hash = hashFor(step);
+  if (push && location.hash !== hash) history.pushState({ step }, "", hash);
+  else history.replaceState({ step }, "", hash);
+  keepNow(step);
   window.scrollTo(0, 0);
+}
+
+function showMachine(id) {
+  state.machineId = id;
+  show("machines");
+}
+
+/** Start a new job from a set-up (a machine's last one), optionally trimming from its stored coefficients. */
+function startJob(setup, coefficientsFrom) {
+  forget();
+  resetJob();
+  state.setup = setup;
+  state.options.coefficientsFrom = coefficientsFrom || null;
+  show("setup");
 }
 
 /** The grid needs speeds, planes and sensors with names; set-up's Next checks the rest. */
@@ -52,21 +93,28 @@ function updateHeader() {
   $('nav [data-step="solve"]').disabled = state.id === null;
 }
 
-async function open(id) {
-  resetJob();
+/** Open a stored session (or a new job with `null`) at `step`. */
+async function open(id, step = "runs", push = true) {
   if (id === null) {
-    history.replaceState(null, "", location.pathname);
-    return show("setup");
+    forget();
+    resetJob();
+    return show("setup", push);
   }
+  const saved = kept();
+  resetJob();
   try {
-    const data = await api.getSession(id);
+    const { data, etag } = await api.getSessionTagged(id);
     loadSession(unwrapSession(data), data.id ?? id);
+    state.etag = etag;
+    // A run half-typed in this session before a reload comes back.
+    if (saved && saved.id === state.id) {
+      if (saved.draft) state.draft = saved.draft;
+      if (saved.options) Object.assign(state.options, saved.options);
+    }
     await loadLastSolution();
-    history.replaceState(null, "", `#session=${encodeURIComponent(state.id)}`);
-    show("runs");
+    show(step, push);
   } catch (err) {
-    history.replaceState(null, "", location.pathname);
-    show("sessions");
+    show("sessions", push);
     const root = $("#step-sessions");
     root.prepend(h("div", { class: "banner error", role: "alert" }, `Could not open the session: ${err.message}`));
   }
@@ -98,12 +146,47 @@ onChange(() => {
   renderReport($("#step-report"));
   updateHeader();
   if (current === "runs") renderRuns($("#step-runs"), () => show("solve"));
+  keep(current);
 });
 
 document.addEventListener("fieldbal:reveal", (e) => reveal(e.detail));
+document.addEventListener("fieldbal:show", (e) => show(e.detail));
 
-for (const tab of $$("nav [data-step]")) tab.addEventListener("click", () => show(tab.dataset.step));
+for (const tab of $$("nav [data-step]")) {
+  tab.addEventListener("click", () => {
+    if (tab.dataset.step === "machines") state.machineId = null;
+    show(tab.dataset.step);
+  });
+}
 
-const match = /^#session=(.+)$/.exec(location.hash);
-if (match) open(decodeURIComponent(match[1]));
-else show("setup");
+/** Back and Forward move between the steps (and the sessions and machines pages). */
+window.addEventListener("popstate", () => {
+  const at = parseHash(location.hash);
+  if (at.machine) {
+    state.machineId = at.machine;
+    return show("machines", false);
+  }
+  if (at.session && at.session !== state.id) return open(at.session, at.step || "runs", false);
+  show(at.step || "setup", false);
+});
+
+function start() {
+  const at = parseHash(location.hash);
+  if (at.session) return open(at.session, at.step || "runs", false);
+  if (at.machine) {
+    state.machineId = at.machine;
+    return show("machines", false);
+  }
+  const saved = kept();
+  if (saved && saved.id === null && saved.setup) {
+    state.setup = saved.setup;
+    state.draft = saved.draft || null;
+    if (saved.options) Object.assign(state.options, saved.options);
+    // Back to the job's own step; the sessions and machines pages are not work to come back to.
+    const step = at.step || (["runs", "solve", "report"].includes(saved.step) ? saved.step : "setup");
+    return show(step, false);
+  }
+  show(at.step || "setup", false);
+}
+
+start();

@@ -11,6 +11,10 @@ export function parseNumber(text) {
   const t = String(text ?? "").trim();
   if (t === "") return { empty: true };
   if (!NUMBER.test(t)) return { error: "not a number" };
+  // "1,234" reads as a thousand and more to some and as 1.234 to others: ask.
+  if (/^[+-]?[1-9]\d{0,2},\d{3}$/.test(t)) {
+    return { error: `${t} could mean ${t.replace(",", "")} or ${t.replace(",", ".")}: type it without the comma, or with a point` };
+  }
   const value = Number(t.replace(",", "."));
   if (!Number.isFinite(value)) return { error: "number too large" };
   return { value };
@@ -19,8 +23,8 @@ export function parseNumber(text) {
 /** Rules for each kind of numeric field: the check and its message. */
 export const RULES = {
   amplitude: { test: (x) => x >= 0 && x < 1e6, message: "amplitude must be 0 or more" },
-  phase: { test: (x) => x > -360 && x < 720, message: "phase in degrees, 0 to 360" },
-  angle: { test: (x) => x > -360 && x < 720, message: "angle in degrees, 0 to 360" },
+  phase: { test: (x) => x >= 0 && x <= 360, message: (x) => `phase in degrees, 0 to 360: ${turnWords(x)}` },
+  angle: { test: (x) => x >= 0 && x <= 360, message: (x) => `angle in degrees, 0 to 360: ${turnWords(x)}` },
   mass: { test: (x) => x > 0 && x < 1e6, message: "mass in grams, more than 0" },
   radius: { test: (x) => x > 0 && x < 1e5, message: "radius in mm, more than 0" },
   positions: {
@@ -28,6 +32,8 @@ export const RULES = {
     message: "a whole number of places, 2 or more",
   },
   speed: { test: (x) => x > 0 && x < 1e6, message: "speed in rpm, more than 0" },
+  noise: { test: (x) => x > 0 && x < 100, message: "more than 0 and less than 100" },
+  limit: { test: (x) => x > 0 && x < 1e6, message: "a vibration level, more than 0" },
 };
 
 /** Check typed text against a rule; `{ value }`, `{ empty }` or `{ error }`. */
@@ -36,13 +42,35 @@ export function check(text, kind, required = true) {
   if (parsed.empty) return required ? { error: "required", empty: true } : { empty: true };
   if (parsed.error) return parsed;
   const rule = RULES[kind];
-  if (rule && !rule.test(parsed.value)) return { error: rule.message };
+  if (rule && !rule.test(parsed.value)) {
+    return { error: typeof rule.message === "function" ? rule.message(parsed.value) : rule.message };
+  }
   return parsed;
 }
 
-/** Speeds typed as one list: "1480" or "1480 2950" or "1480; 2950". */
+/** Why an angle outside one turn is refused, and what it probably meant. */
+function turnWords(x) {
+  const meant = Number(wrap360(x).toFixed(6));
+  return x < 0
+    ? `${x}° is below 0, the same place as ${meant}°; type ${meant}`
+    : `${x}° is more than a turn, the same place as ${meant}°; type ${meant}`;
+}
+
+/** The one decimal rule, said where numbers are typed. */
+export const DECIMAL_RULE = "Decimals with a point or a comma (2.5 or 2,5); no thousands separators (1,234 is refused: type 1234 or 1.234).";
+export const SPEEDS_RULE = "Several speeds: separate them with a space or “;” (1480; 2950), decimals with a point.";
+
+/**
+ * Speeds typed as one list: "1480", "1480 2950", "1480; 2950" or "1480, 2950".
+ * A comma between two digits ("1480,2950") could be a decimal comma: refused.
+ */
 export function parseSpeeds(text) {
-  const parts = String(text ?? "").split(/[\s;]+/).filter((p) => p !== "");
+  const t = String(text ?? "");
+  const glued = /\d+,\d+/.exec(t);
+  if (glued) {
+    return { error: `“${glued[0]}” is ambiguous: one speed with a decimal comma, or two speeds? Separate speeds with a space or “;” (e.g. 1480; 2950) and write decimals with a point` };
+  }
+  const parts = t.split(/[\s;,]+/).filter((p) => p !== "");
   if (parts.length === 0) return { error: "at least one speed, rpm" };
   const speeds = [];
   for (const part of parts) {

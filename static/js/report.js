@@ -1,11 +1,16 @@
-// Step 4, the printable report: set-up, all runs, the solution and the date.
+// Step 4, the printable report with what ISO 21940-13 asks of an in-situ
+// balancing report: the answer first (verdict, weights, acceptance), then the
+// machine and reason, instrumentation and conventions, every weight and run
+// with units, the coefficients used, plots, the date and signature lines.
 // Print CSS shows only this section on paper.
 
-import { h, replace } from "./dom.js";
-import { fmt, unitLabel } from "./num.js";
+import { h, replace, $ } from "./dom.js";
+import { fmt, fmtAngle, unitLabel } from "./num.js";
 import { state, rows, readingFor } from "./state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, summaryBox, warningsBox } from "./solve.js";
+import { verdict, trimWords, runChecks, planePictures } from "./answer.js";
+import { plotsSection } from "./plots.js";
 
 // The kit weights to fit, when the solution has a discrete fit (`fit`).
 function fitTable(sol) {
@@ -39,43 +44,92 @@ function isoVerdict(sol) {
         h("td", {}, word(v.after_correction_pass)))))));
 }
 
+/** A weight as the report lists it: plane, mass, radius, angle, place. */
+function weightRows(run) {
+  const planes = new Map(state.setup.planes.map((p) => [p.id, p]));
+  return run.weights.map((w, i) => h("tr", {},
+    h("td", {}, i === 0 ? run.id : ""), h("td", {}, w.plane), h("td", {}, `${fmt(w.mass_g, 1)} g`),
+    h("td", {}, planes.get(w.plane) && planes.get(w.plane).radius_mm ? `${fmt(planes.get(w.plane).radius_mm, 0)} mm` : "–"),
+    h("td", {}, fmtAngle(w.angle_deg)), h("td", {}, "–")));
+}
+
+function coefficientsTable(sol) {
+  const units = new Map(state.setup.sensors.map((x) => [x.id, x.unit]));
+  return [
+    sol.coefficients_from ? h("p", {}, `Stored coefficients of machine ${sol.coefficients_from.machine}, version ${sol.coefficients_from.version ?? "latest"}.`) : h("p", {}, "Estimated from this job's runs by least squares."),
+    h("table", { class: "report-coefficients" },
+      h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Amplitude per gram"), h("th", {}, "Phase, °"))),
+      h("tbody", {}, (sol.influence_coefficients || []).map((c) => h("tr", {},
+        h("td", {}, fmt(c.speed_rpm, 0)), h("td", {}, c.sensor), h("td", {}, c.plane),
+        h("td", {}, `${fmt(c.amplitude_per_g, 3)} ${unitLabel(units.get(c.sensor))}/g`), h("td", {}, fmt(c.phase_deg, 1)))))),
+  ];
+}
+
+/** The part the customer reads first: the verdict and what was (to be) fitted. */
+function answerSection(sol) {
+  if (!sol) return h("section", { class: "report-answer" }, h("h3", {}, "Result"), h("p", {}, "Not solved yet."));
+  return h("section", { class: "report-answer" },
+    h("h3", {}, "Result"),
+    verdict(sol),
+    trimWords(sol),
+    correctionsTable(sol),
+    fitTable(sol),
+    summaryBox(sol),
+    isoVerdict(sol),
+    warningsBox(sol));
+}
+
 export function renderReport(root) {
   const setup = state.setup;
   const runs = state.runs.filter((r) => r.stored);
   const sol = state.solution;
   const now = new Date();
+  const info = state.report || (state.report = { reason: "", by: "" });
+  const units = new Map(setup.sensors.map((x) => [x.id, x.unit]));
   replace(root,
-    h("div", { class: "no-print actions" }, h("button", { type: "button", class: "primary print", onclick: () => window.print() }, "Print report")),
+    h("div", { class: "no-print report-fields" },
+      h("label", {}, h("span", {}, "Reason for balancing"), h("input", { type: "text", class: "report-reason", value: info.reason, size: 40, placeholder: "e.g. vibration alarm after blade repair", oninput: (e) => { info.reason = e.target.value; $(".reason-text", root).textContent = info.reason || "–"; } })),
+      h("label", {}, h("span", {}, "Balanced by"), h("input", { type: "text", class: "report-by", value: info.by, size: 24, oninput: (e) => { info.by = e.target.value; $(".by-text", root).textContent = info.by || ""; } })),
+      h("button", { type: "button", class: "primary print", onclick: () => window.print() }, "Print report")),
     h("article", { class: "report" },
       h("header", {},
         h("h2", { class: "report-title" }, `Balancing report — ${setup.name || "unnamed"}`),
-        h("p", {}, `Machine: ${setup.machine || "–"} · Printed ${now.toLocaleString()} (${now.toISOString().slice(0, 10)})${state.id ? ` · Session ${state.id}` : ""}`)),
-      h("section", {},
-        h("h3", {}, "Set-up"),
-        h("p", {}, `Conventions: ${conventionWords(setup.conventions)}. Speeds: ${setup.speeds.map((x) => fmt(x, 0)).join(", ")} rpm.`),
-        h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"))),
-          h("tbody", {}, setup.planes.map((p) => h("tr", {}, h("td", {}, p.id), h("td", {}, p.radius_mm ?? "–"), h("td", {}, p.positions ?? "–"))))),
+        h("p", {}, `Machine: ${setup.machine || "–"} · ${now.toISOString().slice(0, 10)} (printed ${now.toLocaleString()})${state.id ? ` · Session ${state.id}` : ""}`),
+        h("p", {}, "Reason: ", h("span", { class: "reason-text" }, info.reason || "–"))),
+      answerSection(sol),
+      h("section", { class: "report-setup" },
+        h("h3", {}, "Machine, instrumentation and conventions"),
+        setup.rotor && setup.rotor.mass_kg ? h("p", {}, `Rotor: ${fmt(setup.rotor.mass_kg, 0)} kg, service speed ${fmt(setup.rotor.service_speed_rpm, 0)} rpm${setup.rotor.balance_grade ? `, balance grade ${setup.rotor.balance_grade} (ISO 21940-11)` : ""}.`) : "",
+        h("p", {}, `Phase reference: the once-per-revolution mark, angle 0°. Conventions: ${conventionWords(setup.conventions)}. Speeds: ${setup.speeds.map((x) => fmt(x, 0)).join(", ")} rpm. 1X readings (amplitude and phase at running speed).`),
+        h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}, "Kit, g"))),
+          h("tbody", {}, setup.planes.map((p) => h("tr", {}, h("td", {}, p.id), h("td", {}, p.radius_mm ?? "–"),
+            h("td", {}, p.places_deg ? p.places_deg.join(", ") + "°" : p.positions ?? "–"), h("td", {}, p.kit ? p.kit.masses_g.join(", ") : "–"))))),
         h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Unit"), h("th", {}, "Where"))),
           h("tbody", {}, setup.sensors.map((x) => h("tr", {}, h("td", {}, x.id), h("td", {}, unitLabel(x.unit)), h("td", {}, x.label || "–")))))),
-      h("section", {},
+      h("section", { class: "report-weights" },
+        h("h3", {}, "Trial and correction weights"),
+        h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, "Radius"), h("th", {}, "Angle"), h("th", {}, "Place"))),
+          h("tbody", {}, runs.filter((r) => r.weights.length).map(weightRows)))),
+      h("section", { class: "report-runs-section" },
         h("h3", {}, "Runs"),
         h("table", { class: "report-runs" },
-          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Weights"), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Phase, °"))),
+          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Weights"), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Unit"), h("th", {}, "Phase, °"))),
           h("tbody", {}, runs.map((run) => rows().map((row, i) => {
             const r = readingFor(run, row);
-            return h("tr", { class: i === 0 ? "first" : "" },
-              h("td", {}, i === 0 ? run.id : ""), h("td", {}, i === 0 ? weightsText(run.weights) : ""),
+            // The run's name on every row: a page break may fall anywhere in it.
+            return h("tr", { class: i === 0 ? "first" : "cont" },
+              h("td", { class: "run-name" }, run.id), h("td", {}, i === 0 ? weightsText(run.weights) : ""),
               h("td", {}, fmt(row.speed, 0)), h("td", {}, row.sensor),
-              h("td", {}, r ? fmt(r.amplitude, 2) : "–"), h("td", {}, r ? fmt(r.phase_deg, 1) : "–"));
+              h("td", {}, r ? fmt(r.amplitude, 2) : "–"), h("td", {}, unitLabel(units.get(row.sensor))), h("td", {}, r ? fmt(r.phase_deg, 1) : "–"));
           }))))),
-      sol ? h("section", {},
-        h("h3", {}, "Solution"),
-        warningsBox(sol),
-        correctionsTable(sol),
-        fitTable(sol),
-        summaryBox(sol),
-        isoVerdict(sol),
-        residualTable(sol)) : h("p", {}, "Not solved yet."),
+      sol ? h("section", { class: "report-coeffs" }, h("h3", {}, "Influence coefficients used"), coefficientsTable(sol)) : "",
+      sol ? h("section", { class: "report-residual" }, h("h3", {}, "Predicted vibration after correction"), residualTable(sol), runChecks(sol)) : "",
+      sol ? h("section", { class: "report-plots" }, h("h3", {}, "Plots"), planePictures(sol), plotsSection(sol)) : "",
+      h("footer", { class: "signature" },
+        h("p", {}, `Date: ${now.toISOString().slice(0, 10)}`),
+        h("div", { class: "sign-lines" },
+          h("div", {}, h("span", { class: "line" }), h("span", {}, "Balanced by: ", h("span", { class: "by-text" }, info.by || ""))),
+          h("div", {}, h("span", { class: "line" }), h("span", {}, "Accepted for the customer: name and signature")))),
     ),
   );
 }

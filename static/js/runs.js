@@ -5,9 +5,11 @@
 
 import { h, replace, $ } from "./dom.js";
 import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "./fields.js";
-import { fmt, unitLabel } from "./num.js";
-import { api } from "./api.js";
-import { state, rows, readingFor, setupJson, runJson, referenceRun, changed } from "./state.js";
+import { fmt, unitLabel, DECIMAL_RULE } from "./num.js";
+import { api, ApiError } from "./api.js";
+import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession } from "./state.js";
+import { csvImportButton } from "./csv.js";
+import { retrialQuestion, ask, suggestionBox } from "./trial.js";
 
 function angleWords() {
   return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
@@ -24,8 +26,19 @@ function previousTrial() {
   return trials.length ? trials[trials.length - 1] : null;
 }
 
-/** Start typing a new run: the zero run first, then trial runs. */
-export function newDraft(kind = "trial", weights = null) {
+/** A run name not used yet: `base`, then `base 2`, `base 3`, … */
+function freeName(base) {
+  const taken = new Set(state.runs.map((r) => r.id));
+  if (!taken.has(base)) return base;
+  for (let n = 2; ; n++) if (!taken.has(`${base} ${n}`)) return `${base} ${n}`;
+}
+
+/**
+ * Start typing a new run: the zero run first, then trial runs. A check run
+ * lists every weight on the rotor (`weights`, relative to the zero run);
+ * `fromRun` names the run whose state it was trimmed from.
+ */
+export function newDraft(kind = "trial", weights = null, fromRun = null) {
   const isZero = !referenceRun();
   const trials = state.runs.filter((r) => r.weights.length > 0).length;
   const planes = state.setup.planes;
@@ -34,9 +47,10 @@ export function newDraft(kind = "trial", weights = null) {
     : weights || [{ plane: planes[Math.min(trials, planes.length - 1)].id, mass_g: null, angle_deg: null }];
   state.draft = {
     index: null,
-    id: isZero ? "zero" : kind === "check" ? "check" : `trial ${trials + 1}`,
+    id: isZero ? "zero" : kind === "check" ? freeName("check") : freeName(`trial ${trials + 1}`),
     zero: isZero,
     check: kind === "check" && !isZero,
+    fromRun,
     weights: ownWeights.map((w) => ({ ...w })),
     carry: false,
     rows: rows(),
@@ -44,11 +58,18 @@ export function newDraft(kind = "trial", weights = null) {
   };
 }
 
-/** Correct a stored run: its values go back into the inputs. */
-function editDraft(index) {
+/** Correct a stored run: its values go back into the inputs; its ETag guards the PUT. */
+async function editDraft(index) {
   const run = state.runs[index];
+  let etag = null;
+  try {
+    if (state.id) etag = (await api.getRunTagged(state.id, run.id)).etag;
+  } catch (err) {
+    etag = null;
+  }
   state.draft = {
     index,
+    etag,
     id: run.id,
     zero: run.weights.length === 0,
     weights: run.weights.map((w) => ({ ...w })),
@@ -83,7 +104,35 @@ function draftPosition() {
   return state.draft.index === null ? state.runs.length : state.draft.index;
 }
 
-async function store(root) {
+/** The words for a change made elsewhere, and a way to see it without losing the typed run. */
+function conflict(root, rerender) {
+  banner(root, "error", "This session was changed in another tab or on another computer since this page read it (a run was added or corrected there). Nothing was stored from here, and the run you typed is kept. Load the stored session to see the change, check your run against it, then store it again.");
+  const b = $(".banner", root);
+  b.append(" ", h("button", { type: "button", class: "reload-session", onclick: () => reloadStored(root, rerender) }, "Load the stored session"));
+}
+
+/** Read the stored session again, keeping the run being typed. */
+async function reloadStored(root, rerender) {
+  const draft = state.draft;
+  try {
+    const { data, etag } = await api.getSessionTagged(state.id);
+    const id = state.id;
+    loadSession(data.session && typeof data.session === "object" ? data.session : data, id);
+    state.etag = etag;
+    state.draft = draft;
+    if (draft && draft.index !== null) {
+      const at = state.runs.findIndex((r) => r.id === draft.id);
+      draft.index = at >= 0 ? at : null;
+      draft.etag = null;
+    }
+    rerender();
+    changed();
+  } catch (err) {
+    banner(root, "error", err.message);
+  }
+}
+
+async function store(root, rerender) {
   const d = state.draft;
   clearMarks(root);
   banner(root, "error", "");
@@ -94,21 +143,32 @@ async function store(root) {
   if (state.runs.some((r, i) => r.id === run.id && i !== d.index)) {
     return mark($(`[data-field="runs[${k}].id"]`, root), "another run already has this name");
   }
+  const question = retrialQuestion(run, d);
+  if (question) {
+    return ask(root, question, () => { d.confirmedRetrial = true; store(root, rerender); }, () => $(`[data-field="runs[${k}].weights[0].plane"]`, root)?.focus());
+  }
   try {
     if (state.id === null) {
       const session = { ...setupJson(), runs: [run] };
       const created = await api.createSession(session);
       state.id = created.id;
-      history.replaceState(null, "", `#session=${encodeURIComponent(created.id)}`);
+      history.replaceState({ step: "runs" }, "", `#session=${encodeURIComponent(created.id)}&step=runs`);
       state.runs = [{ ...runJson(run), stored: true }];
-    } else if (d.index === null) {
-      await api.addRun(state.id, run);
-      state.runs.push({ ...runJson(run), stored: true });
     } else {
-      await api.putRun(state.id, state.runs[d.index].id, run);
-      state.runs[d.index] = { ...runJson(run), stored: true };
+      // Two tabs on one session: anything stored elsewhere since this page read it stops the write.
+      const now = await api.getSessionTagged(state.id);
+      if (state.etag && now.etag && now.etag !== state.etag) return conflict(root, rerender);
+      if (d.index === null) {
+        await api.addRun(state.id, run);
+        state.runs.push({ ...runJson(run), stored: true });
+      } else {
+        await api.putRunIfMatch(state.id, state.runs[d.index].id, run, d.etag);
+        state.runs[d.index] = { ...runJson(run), stored: true };
+      }
     }
+    state.etag = (await api.getSessionTagged(state.id)).etag;
   } catch (err) {
+    if (err instanceof ApiError && err.status === 412) return conflict(root, rerender);
     const prefix = state.id === null ? "" : `runs[${k}].`;
     if (!markServerError(err, prefix)) banner(root, "error", err.message);
     else banner(root, "error", "The service did not accept the run; the field is marked.");
@@ -155,10 +215,10 @@ function grid(rerender) {
   return h("div", { class: "scroll grid-wrap" }, h("table", { class: "grid" },
     h("thead", {},
       h("tr", {}, h("th", { rowspan: 2 }, "Speed, rpm"), h("th", { rowspan: 2 }, "Sensor"),
-        columns.map((c) => h("th", { colspan: 2, class: c.editing ? "run editing" : "run" },
+        columns.map((c) => h("th", { colspan: 2, class: c.editing ? "run editing" : "run", dataset: { run: c.editing ? d.id || "" : c.run.id } },
           h("div", { class: "run-name" }, c.editing ? d.id || "(new run)" : c.run.id),
           h("div", { class: "run-weights" }, c.editing ? (d.zero ? "no weights (as found)" : "being typed") : weightsText(c.run.weights)),
-          !d && c.run && c.run.stored ? h("button", { type: "button", class: "small correct", onclick: () => { editDraft(c.i); rerender(); } }, "Correct") : ""))),
+          !d && c.run && c.run.stored ? h("button", { type: "button", class: "small correct", onclick: async () => { await editDraft(c.i); rerender(); } }, "Correct") : ""))),
       h("tr", {}, columns.map(() => [h("th", { class: "sub" }, "Amplitude"), h("th", { class: "sub" }, `Phase, ° ${phaseWords}`)]))),
     h("tbody", {}, rows().map((row, r) => h("tr", {},
       h("th", { class: "speed" }, fmt(row.speed, 0)),
@@ -206,19 +266,22 @@ export function renderRuns(root, solve) {
       ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell, Enter stores the run."
       : d && d.check
         ? "Check run: fit the corrections below, take every trial weight off, run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
-        : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
+        : state.options.coefficientsFrom && referenceRun()
+          ? `Trim job from the stored coefficients of machine ${state.options.coefficientsFrom.machine}: no trial runs are needed. Solve now.`
+          : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
     d ? h("div", { class: "draft" },
       h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
-      d.zero ? "" : weightsEditor(d, k, rerender)) : "",
-    h("div", { onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root); } } }, grid(rerender)),
-    h("div", { class: "actions" },
+      d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
+    d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
+    h("div", { onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root, rerender); } } }, grid(rerender)),
+    h("div", { class: "actions sticky" },
       d ? [
-        h("button", { type: "button", class: "primary store", onclick: () => store(root) },
+        h("button", { type: "button", class: "primary store", onclick: () => store(root, rerender) },
           d.index !== null ? "Store the corrected run" : d.zero ? "Store zero run" : "Store run"),
         state.runs.some((r) => r.stored) ? h("button", { type: "button", class: "cancel", onclick: () => { state.draft = null; rerender(); } }, "Cancel") : "",
       ] : [
         h("button", { type: "button", class: "add-trial", onclick: () => { newDraft(); rerender(); $(`[data-field="runs[${state.runs.length}].weights[0].mass_g"]`, root)?.focus(); } }, "+ Add trial run"),
-        h("button", { type: "button", class: "primary go-solve", disabled: trials < planes, onclick: solve }, "Solve →"),
+        h("button", { type: "button", class: "primary go-solve", disabled: trials < planes && !state.options.coefficientsFrom, onclick: solve }, "Solve →"),
       ],
     ),
   );

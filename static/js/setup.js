@@ -4,7 +4,7 @@
 
 import { h, replace, $ } from "./dom.js";
 import { numberInput, textInput, selectInput, validateAll, mark, clearMarks, banner } from "./fields.js";
-import { parseSpeeds, UNITS } from "./num.js";
+import { parseSpeeds, UNITS, SPEEDS_RULE, DECIMAL_RULE, check } from "./num.js";
 import { conventionsPicture } from "./picture.js";
 import { state, setupLocked } from "./state.js";
 
@@ -24,6 +24,8 @@ function planeRow(plane, i, locked, rerender) {
     h("td", {}, textInput({ field: `planes[${i}].id`, value: plane.id, required: true, label: `Plane ${i + 1} name`, placeholder: "e.g. A", disabled: locked, size: 10, maxlength: 64, onValue: (v) => (plane.id = v) })),
     h("td", {}, numberInput({ field: `planes[${i}].radius_mm`, kind: "radius", value: plane.radius_mm, required: false, label: `Plane ${i + 1} radius, mm`, disabled: locked, onValue: (v) => (plane.radius_mm = v) })),
     h("td", {}, numberInput({ field: `planes[${i}].positions`, kind: "positions", value: plane.positions, required: false, label: `Plane ${i + 1} fixed places`, placeholder: "free", disabled: locked, size: 5, onValue: (v) => (plane.positions = v) })),
+    h("td", {}, listInput({ field: `planes[${i}].places_deg`, kind: "angle", value: plane.places_deg, label: `Plane ${i + 1} places at, degrees`, placeholder: "e.g. 0 40 100", disabled: locked, onValue: (v) => (plane.places_deg = v) })),
+    h("td", {}, listInput({ field: `planes[${i}].kit.masses_g`, kind: "mass", value: plane.kit && plane.kit.masses_g, label: `Plane ${i + 1} kit weights, g`, placeholder: "e.g. 5 10 20", disabled: locked, onValue: (v) => (plane.kit = v ? { masses_g: v, max_per_place: (plane.kit && plane.kit.max_per_place) || 2 } : null) })),
     h("td", {}, locked || state.setup.planes.length < 2 ? "" : h("button", { type: "button", class: "small", "aria-label": `Remove plane ${i + 1}`, onclick: () => { state.setup.planes.splice(i, 1); rerender(); } }, "Remove")),
   );
 }
@@ -37,6 +39,40 @@ function sensorRow(sensor, i, locked, rerender) {
     h("td", {}, textInput({ field: `sensors[${i}].label`, value: sensor.label, label: `Sensor ${i + 1} position`, placeholder: "e.g. DE bearing, horizontal", disabled: locked, size: 22, onValue: (v) => (sensor.label = v) })),
     h("td", {}, locked || state.setup.sensors.length < 2 ? "" : h("button", { type: "button", class: "small", "aria-label": `Remove sensor ${i + 1}`, onclick: () => { state.setup.sensors.splice(i, 1); rerender(); } }, "Remove")),
   );
+}
+
+/**
+ * A list of numbers typed in one field ("0 40 100" or "0; 40; 100"), each
+ * checked by the rule of `kind`; `onValue` gets the list, or null when empty.
+ */
+function listInput({ field, kind, value, label, placeholder, disabled, onValue }) {
+  const input = h("input", { type: "text", class: "list", dataset: { field }, "aria-label": label, placeholder, disabled, size: 12, value: Array.isArray(value) ? value.join(" ") : "", autocomplete: "off" });
+  const validate = () => {
+    const text = input.value.trim();
+    if (text === "") { mark(input, ""); onValue(null); return true; }
+    if (/\d,\d/.test(text)) { mark(input, "separate the numbers with spaces or “;”, decimals with a point"); return false; }
+    const out = [];
+    for (const part of text.split(/[\s;,]+/).filter(Boolean)) {
+      const r = check(part, kind);
+      if (r.error) { mark(input, `${part}: ${r.error}`); return false; }
+      out.push(r.value);
+    }
+    mark(input, "");
+    onValue(out);
+    return true;
+  };
+  input.addEventListener("input", validate);
+  input.validateNow = validate;
+  return h("span", { class: "field text-field" }, input, h("span", { class: "msg", role: "alert" }));
+}
+
+/** Rotor data: for the ISO 21940-11 check and for sizing a trial weight. */
+function rotorFields(setup, locked) {
+  const r = setup.rotor || (setup.rotor = { mass_kg: null, service_speed_rpm: null, balance_grade: "" });
+  return h("fieldset", { class: "rotor" }, h("legend", {}, "Rotor (optional: for the ISO 21940-11 check and the trial-weight size)"),
+    h("label", {}, h("span", {}, "Mass, kg"), numberInput({ field: "rotor.mass_kg", kind: "radius", value: r.mass_kg, required: false, label: "Rotor mass, kg", disabled: locked, onValue: (v) => (r.mass_kg = v) })),
+    h("label", {}, h("span", {}, "Service speed, rpm"), numberInput({ field: "rotor.service_speed_rpm", kind: "speed", value: r.service_speed_rpm, required: false, label: "Service speed, rpm", disabled: locked, onValue: (v) => (r.service_speed_rpm = v) })),
+    h("label", {}, h("span", {}, "Balance grade"), selectInput({ field: "rotor.balance_grade", value: r.balance_grade || "", choices: [["", "none"], ...["G0.4", "G1", "G2.5", "G6.3", "G16", "G40"].map((g) => [g, g])], label: "Balance grade", disabled: locked, onValue: (v) => (r.balance_grade = v) })));
 }
 
 /** Ids must be unique within planes and within sensors; mark the repeats. */
@@ -89,7 +125,8 @@ export function renderSetup(root, next) {
       h("legend", {}, "Job"),
       h("label", {}, h("span", {}, "Name"), textInput({ field: "name", value: setup.name, required: true, label: "Session name", placeholder: "e.g. ID fan 3, coupling end", disabled: locked, size: 32, onValue: (v) => (setup.name = v) })),
       h("label", {}, h("span", {}, "Machine"), textInput({ field: "machine", value: setup.machine, label: "Machine", placeholder: "e.g. ID-FAN-3", disabled: locked, size: 20, onValue: (v) => (setup.machine = v) })),
-      h("label", {}, h("span", {}, "Speeds, rpm"), h("span", { class: "field" }, speeds, h("span", { class: "msg", role: "alert" }))),
+      h("label", {}, h("span", {}, "Speeds, rpm"), h("span", { class: "field" }, speeds, h("span", { class: "msg", role: "alert" }), h("span", { class: "hint rule" }, SPEEDS_RULE))),
+      h("p", { class: "hint rule decimal-rule" }, DECIMAL_RULE),
     ),
     h(
       "fieldset",
@@ -108,11 +145,11 @@ export function renderSetup(root, next) {
       { class: "planes" },
       h("legend", {}, "Correction planes"),
       h("div", { class: "scroll" }, h("table", { class: "edit" },
-        h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}))),
+        h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}, "or places at, °"), h("th", {}, "Kit weights, g"), h("th", {}))),
         h("tbody", {}, setup.planes.map((p, i) => planeRow(p, i, locked, rerender))),
       )),
       locked ? "" : h("button", { type: "button", class: "add-plane", onclick: () => { setup.planes.push({ id: "", radius_mm: null, positions: null }); rerender(); $(`[data-field="planes[${setup.planes.length - 1}].id"]`, root).focus(); } }, "+ Add plane"),
-      h("p", { class: "hint" }, "Fixed places: the number of equally spaced holes or blades where weights can go (place 0 at the mark). Leave empty for a free angle."),
+      h("p", { class: "hint" }, "Fixed places: the number of equally spaced holes or blades where weights can go (place 0 at the mark), or their angles when they are not equally spaced. Leave empty for a free angle. Kit: the weight sizes at hand (at most two stacked at a place); the answer then says which to bolt where."),
     ),
     h(
       "fieldset",
@@ -124,6 +161,7 @@ export function renderSetup(root, next) {
       )),
       locked ? "" : h("button", { type: "button", class: "add-sensor", onclick: () => { setup.sensors.push({ id: "", unit: setup.sensors[setup.sensors.length - 1].unit, label: "" }); rerender(); $(`[data-field="sensors[${setup.sensors.length - 1}].id"]`, root).focus(); } }, "+ Add sensor"),
     ),
+    rotorFields(setup, locked),
     h(
       "div",
       { class: "actions" },

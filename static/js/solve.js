@@ -6,16 +6,10 @@ import { h, replace } from "./dom.js";
 import { banner, markServerError } from "./fields.js";
 import { fmt, fmtAngle, angleDiff, unitLabel } from "./num.js";
 import { api } from "./api.js";
-import { state, rows, readingFor, referenceRun, changed } from "./state.js";
-import { polarPlot } from "./polar.js";
-
-/** What to do about each warning, in the technician's words. */
-const ADVICE = {
-  trial_effect_small: "The trial weight moved the vibration too little to measure its effect. Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase).",
-  ill_conditioned: "Two planes look almost the same to the sensors, so the corrections may be large and cancel each other. Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out dependent planes”).",
-  mass_limit_active: "A correction hit the mass limit you set; the residual is larger than it could be without the limit.",
-  mixed_units: "The sensors use different units; the sum over them mixes units. Give sensor weights to balance them.",
-};
+import { state, changed } from "./state.js";
+import { plainWarning, doubt } from "./words.js";
+import { optionsPanel, solveOptions } from "./options.js";
+import { answerParts } from "./answer.js";
 
 /** "52 g ± 4 g, 141° ± 5°": the 95 % intervals as a half-width around the value. */
 export function uncertaintyText(c) {
@@ -46,7 +40,7 @@ export function correctionsTable(solution) {
   const words = angleWords(solution.conventions || state.setup.conventions);
   return h("table", { class: "corrections" },
     h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, `Angle (${words})`), h("th", {}, "95 % uncertainty"), h("th", {}, "Unbalance"), h("th", {}, "On fixed places"))),
-    h("tbody", {}, solution.corrections.map((c) => h("tr", { dataset: { plane: c.plane } },
+    h("tbody", {}, solution.corrections.map((c) => h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : null, title: doubt(solution, c) || null },
       h("th", { class: "corr-plane" }, c.plane),
       h("td", { class: "corr-mass" }, `${fmt(c.mass_g, 1)} g`),
       h("td", { class: "corr-angle" }, fmtAngle(c.angle_deg)),
@@ -93,40 +87,19 @@ export function warningsBox(solution) {
   if (!solution.warnings.length) return h("div", { class: "warnings none" }, "No warnings: the trial runs were clear and the planes independent.");
   return h("div", { class: "warnings", role: "alert" },
     h("h3", {}, solution.warnings.length === 1 ? "1 warning — read before fitting weights" : `${solution.warnings.length} warnings — read before fitting weights`),
-    h("ul", {}, solution.warnings.map((w) => h("li", { dataset: { code: w.code } },
-      h("strong", {}, w.plane ? `Plane ${w.plane}: ` : ""), w.message,
-      ADVICE[w.code] ? h("div", { class: "advice" }, `What to do: ${ADVICE[w.code]}`) : "",
-    ))),
+    h("ul", {}, solution.warnings.map((w) => {
+      const { what, todo } = plainWarning(w);
+      return h("li", { dataset: { code: w.code } },
+        what,
+        todo ? h("div", { class: "advice" }, `What to do: ${todo}`) : "");
+    })),
   );
-}
-
-function plots(solution) {
-  const reference = referenceRun();
-  if (!reference) return "";
-  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0);
-  const sensors = new Map(state.setup.sensors.map((x) => [x.id, x]));
-  return h("div", { class: "plots" }, rows().map((row) => {
-    const ref = readingFor(reference, row);
-    if (!ref) return "";
-    const residual = solution.predicted_residual.find((p) => p.sensor === row.sensor && Math.abs(p.speed_rpm - row.speed) <= 0.01 * row.speed);
-    return polarPlot({
-      sensor: row.sensor,
-      unit: (sensors.get(row.sensor) || {}).unit,
-      speed: row.speed,
-      phase: (solution.conventions || state.setup.conventions).phase,
-      reference: ref,
-      trials: trials.map((t) => ({ id: t.id, ...readingFor(t, row) })).filter((t) => t.amplitude !== undefined),
-      residual,
-    });
-  }));
 }
 
 async function solve(root, rerender) {
   banner(root, "error", "");
-  const options = { objective: state.options.objective };
-  if (state.options.drop) options.drop_dependent_planes = true;
   try {
-    const stored = await api.solve(state.id, options);
+    const stored = await api.solve(state.id, solveOptions());
     state.solution = stored && stored.solution ? stored.solution : stored;
     state.solutionDate = (stored && stored.created_at) || null;
   } catch (err) {
@@ -137,30 +110,18 @@ async function solve(root, rerender) {
   rerender();
 }
 
-/** Render the solve step; `checkRun` starts a check run with the corrections fitted. */
+/** Render the solve step; `checkRun(weights, fromRun)` starts a check run with those weights on. */
 export function renderSolve(root, checkRun) {
   const rerender = () => renderSolve(root, checkRun);
   const sol = state.solution;
   replace(root,
     h("h2", {}, "3 · Corrections"),
-    h("div", { class: "solve-options" },
-      h("label", {}, "Minimise ", h("select", { class: "objective", onchange: (e) => (state.options.objective = e.target.value) },
-        h("option", { value: "least_squares", selected: state.options.objective === "least_squares" }, "the sum of squares (usual)"),
-        h("option", { value: "min_max", selected: state.options.objective === "min_max" }, "the largest vibration"))),
-      h("label", {}, h("input", { type: "checkbox", checked: !!state.options.drop, onchange: (e) => (state.options.drop = e.target.checked) }), " leave out dependent planes"),
-      h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve"),
-    ),
+    optionsPanel(),
+    h("div", { class: "actions solve-actions" },
+      h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve")),
     sol ? [
       state.solutionDate ? h("p", { class: "hint solved-at" }, `Solved ${state.solutionDate.replace("T", " ").replace(/\.\d+/, "")}`) : "",
-      warningsBox(sol),
-      h("h3", {}, "Fit these weights (all trial weights removed)"),
-      h("div", { class: "scroll" }, correctionsTable(sol)),
-      summaryBox(sol),
-      h("h3", {}, "Predicted vibration after correction"),
-      h("div", { class: "scroll" }, residualTable(sol)),
-      h("h3", {}, "Polar plots"),
-      plots(sol),
-      h("div", { class: "actions" }, h("button", { type: "button", class: "check-run", onclick: checkRun }, "Fit the weights, then record a check run →")),
+      answerParts(sol, checkRun, rerender),
     ] : h("p", { class: "lead" }, state.id === null ? "Store the zero run and the trial runs first." : "Press Solve to compute the corrections."),
   );
 }

@@ -10,8 +10,14 @@ export const state = {
   draft: null, // the run being typed or corrected (see runs.js), or null
   solution: null,
   solutionDate: null,
-  options: { objective: "least_squares" },
+  options: defaultOptions(),
+  etag: null, // the stored session's ETag as this page last read it (two tabs)
 };
+
+/** Solve options as the form edits them (see solveOptions in options.js). */
+export function defaultOptions() {
+  return { objective: "least_squares", drop: false, maxMass: {}, leaveSensors: [], leaveSpeeds: [], ampNoise: null, phaseNoise: null, fromRun: null, discrete: true };
+}
 
 export function emptySetup() {
   return {
@@ -21,6 +27,7 @@ export function emptySetup() {
     planes: [{ id: "", radius_mm: null, positions: null }],
     sensors: [{ id: "", unit: "um_pp", label: "" }],
     speeds: [],
+    rotor: null,
   };
 }
 
@@ -39,6 +46,9 @@ export function resetJob() {
   state.runs = [];
   state.draft = null;
   state.solution = null;
+  state.solutionDate = null;
+  state.options = defaultOptions();
+  state.etag = null;
 }
 
 /** The grid's rows in reading order: every speed, and every sensor at it. */
@@ -66,6 +76,8 @@ export function setupJson(setup = state.setup) {
     const plane = { id: p.id };
     if (p.radius_mm !== null && p.radius_mm !== undefined) plane.radius_mm = p.radius_mm;
     if (p.positions !== null && p.positions !== undefined) plane.positions = p.positions;
+    if (Array.isArray(p.places_deg) && p.places_deg.length) plane.places_deg = p.places_deg;
+    if (p.kit && Array.isArray(p.kit.masses_g) && p.kit.masses_g.length) plane.kit = { ...p.kit };
     return plane;
   });
   out.sensors = setup.sensors.map((x) => {
@@ -73,7 +85,11 @@ export function setupJson(setup = state.setup) {
     if (x.label) sensor.label = x.label;
     return sensor;
   });
-  if (setup.rotor) out.rotor = setup.rotor;
+  if (setup.rotor && setup.rotor.mass_kg && setup.rotor.service_speed_rpm) {
+    out.rotor = { mass_kg: setup.rotor.mass_kg, service_speed_rpm: setup.rotor.service_speed_rpm };
+    if (setup.rotor.balance_grade) out.rotor.balance_grade = setup.rotor.balance_grade;
+  }
+  if (setup.runout && setup.runout.length) out.runout = setup.runout;
   return out;
 }
 
@@ -96,29 +112,49 @@ export function sessionJson(all = false) {
   return session;
 }
 
-/** Load a wire session (from the server or a file) into the job. */
-export function loadSession(session, id) {
+/** The form's set-up of a wire session (speeds from its reference run). */
+export function setupOf(session) {
   const speeds = [];
   const reference = session.runs.find((r) => r.weights.length === 0) || session.runs[0];
   for (const r of reference ? reference.readings : []) {
     if (!speeds.some((x) => Math.abs(x - r.speed_rpm) <= 0.01 * Math.max(x, r.speed_rpm))) speeds.push(r.speed_rpm);
   }
-  state.id = id;
-  state.setup = {
+  return {
     name: session.name,
     machine: session.machine || "",
     conventions: {
       phase: (session.conventions && session.conventions.phase) || "lag",
       angle_direction: (session.conventions && session.conventions.angle_direction) || "against_rotation",
     },
-    planes: session.planes.map((p) => ({ id: p.id, radius_mm: p.radius_mm ?? null, positions: p.positions ?? null })),
+    planes: session.planes.map((p) => ({ id: p.id, radius_mm: p.radius_mm ?? null, positions: p.positions ?? null, places_deg: p.places_deg, kit: p.kit })),
     sensors: session.sensors.map((x) => ({ id: x.id, unit: x.unit, label: x.label || "" })),
     speeds,
-    rotor: session.rotor,
+    rotor: session.rotor || null,
+    runout: session.runout,
   };
+}
+
+/** Load a wire session (from the server or a file) into the job. */
+export function loadSession(session, id) {
+  state.id = id;
+  state.setup = setupOf(session);
   state.runs = session.runs.map((r) => ({ ...runJson(r), stored: id !== null }));
   state.draft = null;
   state.solution = null;
+}
+
+/** The set-up of a stored job as the start of a new one (same machine, no runs). */
+export function copySetup() {
+  const s = JSON.parse(JSON.stringify(state.setup));
+  s.name = "";
+  return s;
+}
+
+/** Planes that a stored run has already put a weight in: plane → the first such run's name. */
+export function triedPlanes() {
+  const out = new Map();
+  for (const r of state.runs) if (r.stored) for (const w of r.weights) if (!out.has(w.plane)) out.set(w.plane, r.id);
+  return out;
 }
 
 /** The reference (zero) run, if there is one. */

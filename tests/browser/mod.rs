@@ -4,7 +4,10 @@
 #![allow(dead_code)] // each browser test binary uses a different part of this module
 
 pub mod form;
+pub mod job;
+pub mod scenes;
 pub mod stand;
+pub mod steps;
 
 use std::net::TcpListener;
 use std::path::{Path, PathBuf};

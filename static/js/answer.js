@@ -1,0 +1,116 @@
+// The answer of a solve, as the corrections step shows it: whether the rotor is
+// within tolerance, what to bolt on (or add to what is on now, for a trim),
+// doubtful figures greyed with the reason, each check run beside its
+// prediction, and the pictures. The report reuses the parts.
+
+import { h } from "./dom.js";
+import { fmt, fmtAngle } from "./num.js";
+import { state } from "./state.js";
+import { correctionsTable, summaryBox, residualTable, warningsBox } from "./solve.js";
+import { doubt } from "./words.js";
+import { planePicture } from "./planes.js";
+import { plotsSection } from "./plots.js";
+
+/** The run a solution's "as found" describes: its from_run, else the zero run. */
+function baseRun(sol) {
+  const id = sol.from_run;
+  return state.runs.find((r) => (id ? r.id === id : r.weights.length === 0)) || null;
+}
+
+/** Within tolerance: the largest reading of the base run against the limit the technician set. */
+export function verdict(sol) {
+  const limit = state.options.limit;
+  const run = baseRun(sol);
+  const max = sol.summary ? sol.summary.max_before : null;
+  if (!limit || max === null || !run) return "";
+  const ok = max <= limit;
+  return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
+    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}, at or below the limit of ${fmt(limit, 1)}. No more weights are needed.`
+      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}, above the limit of ${fmt(limit, 1)}. Fit the weights below and do a check run.`);
+}
+
+/** "Add 4.2 g at 250° to what is on now, or replace the weights in this plane by …" */
+export function trimWords(sol) {
+  if (!sol.from_run) return "";
+  const run = state.runs.find((r) => r.id === sol.from_run);
+  return h("div", { class: "trim" },
+    h("h3", {}, `Trim: the rotor as it is in run “${sol.from_run}”${run ? ` (${run.weights.length} weight${run.weights.length === 1 ? "" : "s"} on)` : ""}`),
+    h("ul", {}, sol.corrections.map((c) => h("li", { dataset: { plane: c.plane } },
+      c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h("strong", {}, `Plane ${c.plane}: add ${fmt(c.mass_g, 1)} g at ${fmtAngle(c.angle_deg)} to what is on now`),
+      c.total ? `, or replace the weights in this plane by one weight of ${fmt(c.total.mass_g, 1)} g at ${fmtAngle(c.total.angle_deg)}.` : "."))));
+}
+
+function checkRow(r) {
+  return h("tr", {},
+    h("td", {}, fmt(r.speed_rpm, 0)), h("td", {}, r.sensor),
+    h("td", { class: "measured" }, `${fmt(r.measured, 1)} at ${fmtAngle(r.measured_phase_deg)}`),
+    h("td", { class: "predicted" }, `${fmt(r.predicted, 1)} at ${fmtAngle(r.predicted_phase_deg)}`),
+    h("td", {}, `≤ ${fmt(r.amplitude_95, 1)}`));
+}
+
+/** Each check run (any run the others predict) beside its prediction. */
+export function runChecks(sol) {
+  if (!sol.run_checks || !sol.run_checks.length) return "";
+  return h("div", { class: "run-checks" },
+    h("h3", {}, "Runs beside their predictions"),
+    sol.run_checks.map((c) => h("div", { class: `run-check ${c.consistent ? "agrees" : "differs"}`, dataset: { run: c.run } },
+      h("p", {}, h("strong", {}, `Run “${c.run}”: `), c.consistent
+        ? `agrees with what the other runs predict for its weights (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted).`
+        : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted). Check its weights and readings.`),
+      h("div", { class: "scroll" }, h("table", { class: "check-table" },
+        h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Measured"), h("th", {}, "Predicted"), h("th", {}, "95 % bound"))),
+        h("tbody", {}, c.rows.map(checkRow)))))));
+}
+
+/** Greyed corrections explained: why, and what to do. */
+export function doubts(sol) {
+  const list = sol.corrections.map((c) => doubt(sol, c)).filter(Boolean);
+  if (!list.length) return "";
+  return h("div", { class: "doubts", role: "note" }, h("h4", {}, "Not to be trusted as it stands (greyed above)"), h("ul", {}, list.map((t) => h("li", {}, t))));
+}
+
+/** Per plane, the picture of where the weights go. */
+export function planePictures(sol) {
+  const direction = (sol.conventions || state.setup.conventions).angle_direction;
+  return h("div", { class: "plane-pics" }, sol.corrections.map((c) => {
+    const plane = state.setup.planes.find((p) => p.id === c.plane) || { id: c.plane };
+    return planePicture(plane, sol, c, direction);
+  }));
+}
+
+/** The weights on the rotor for the next check run: the base run's, plus the corrections (added). */
+function checkWeights(sol, replaceInPlane) {
+  const base = baseRun(sol);
+  const on = base ? base.weights.map((w) => ({ ...w })) : [];
+  const fit = (c) => {
+    const f = sol.fit && sol.fit.find((x) => x.plane === c.plane);
+    return f ? f.weights.map((w) => ({ plane: c.plane, mass_g: Number(w.mass_g.toFixed(1)), angle_deg: Number(w.angle_deg.toFixed(1)) }))
+      : [{ plane: c.plane, mass_g: Number(c.mass_g.toFixed(1)), angle_deg: Number(c.angle_deg.toFixed(1)) }];
+  };
+  if (replaceInPlane && sol.from_run) {
+    return sol.corrections.flatMap((c) => (c.total ? [{ plane: c.plane, mass_g: Number(c.total.mass_g.toFixed(1)), angle_deg: Number(c.total.angle_deg.toFixed(1)) }] : on.filter((w) => w.plane === c.plane)));
+  }
+  // A correction that rounds to 0.0 g is nothing to fit (the service refuses a weight of 0 g).
+  return [...(sol.from_run ? on : []), ...sol.corrections.filter((c) => c.mass_g >= 0.05).flatMap(fit)].filter((w) => w.mass_g > 0);
+}
+
+export function answerParts(sol, checkRun) {
+  return [
+    verdict(sol),
+    warningsBox(sol),
+    trimWords(sol),
+    h("h3", {}, sol.from_run ? `Add these weights to what is on in run “${sol.from_run}”` : "Fit these weights (all trial weights removed)"),
+    h("div", { class: "scroll" }, correctionsTable(sol)),
+    doubts(sol),
+    planePictures(sol),
+    summaryBox(sol),
+    runChecks(sol),
+    h("h3", {}, "Predicted vibration after correction"),
+    h("div", { class: "scroll" }, residualTable(sol)),
+    plotsSection(sol),
+    h("div", { class: "actions" },
+      h("button", { type: "button", class: "primary check-run", onclick: () => checkRun(checkWeights(sol, false), sol.from_run || null) },
+        sol.from_run ? "Weights added: record a check run →" : "Fit the weights, then record a check run →"),
+      sol.from_run ? h("button", { type: "button", class: "check-run-replaced", onclick: () => checkRun(checkWeights(sol, true), sol.from_run) }, "Weights replaced by one per plane: record a check run →") : ""),
+  ];
+}

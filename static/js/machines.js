@@ -1,0 +1,129 @@
+// Machines: the list, and a machine's page — its jobs over time (vibration
+// before and after, with a small trend plot), its stored coefficient versions,
+// a new job with the set-up of its last one, and a trim job from its stored
+// coefficients that needs only a reference run.
+
+import { h, s, replace } from "./dom.js";
+import { banner, textInput, numberInput } from "./fields.js";
+import { fmt } from "./num.js";
+import { api, unwrapSession } from "./api.js";
+import { state, setupOf, emptySetup } from "./state.js";
+
+const when = (t) => (t ? String(t).replace("T", " ").replace(/:\d\d(\.\d+)?Z$/, " UTC") : "");
+
+/** Before and after per job, oldest first, as two lines. */
+function trend(sessions) {
+  const jobs = sessions.filter((x) => x.summary).sort((a, b) => String(a.created_at).localeCompare(String(b.created_at)));
+  if (jobs.length === 0) return h("p", { class: "hint" }, "No solved job yet: the trend starts with the first.");
+  const W = 360;
+  const H = 120;
+  const top = Math.max(...jobs.map((j) => j.summary.rms_before), 1e-9);
+  const x = (i) => (jobs.length === 1 ? W / 2 : 30 + (i * (W - 50)) / (jobs.length - 1));
+  const y = (v) => 10 + (1 - v / top) * (H - 30);
+  const line = (key, colour) => [
+    s("path", { d: jobs.map((j, i) => `${i ? "L" : "M"}${x(i).toFixed(1)},${y(j.summary[key]).toFixed(1)}`).join(" "), stroke: colour, class: "series" }),
+    jobs.map((j, i) => s("circle", { cx: x(i), cy: y(j.summary[key]), r: 3, fill: colour })),
+  ];
+  return h("figure", { class: "trend-fig" },
+    h("figcaption", {}, "RMS vibration per job: before (blue) and predicted after (green)"),
+    s("svg", { viewBox: `0 0 ${W} ${H}`, class: "trend", role: "img", "aria-label": "Vibration per job over time" },
+      s("line", { x1: 25, x2: W - 10, y1: y(0), y2: y(0), class: "grid" }),
+      s("text", { x: 2, y: y(top) + 4, class: "tick" }, fmt(top, 0)),
+      s("text", { x: 2, y: y(0) + 4, class: "tick" }, "0"),
+      line("rms_before", "#1d4ed8"), line("rms_after", "#15803d")));
+}
+
+async function setupOfLatest(machine) {
+  const sessions = [...(machine.sessions || [])].sort((a, b) => String(b.created_at).localeCompare(String(a.created_at)));
+  if (!sessions.length) {
+    const setup = emptySetup();
+    setup.machine = machine.id;
+    if (machine.rotor) setup.rotor = machine.rotor;
+    return setup;
+  }
+  const data = await api.getSession(sessions[0].id);
+  const setup = setupOf(unwrapSession(data));
+  setup.name = "";
+  setup.machine = machine.id;
+  if (!setup.rotor && machine.rotor) setup.rotor = machine.rotor;
+  return setup;
+}
+
+async function machinePage(root, id, go) {
+  replace(root, h("h2", {}, `Machine ${id}`), h("p", {}, "Loading…"));
+  let m;
+  try {
+    m = await api.getMachine(id);
+  } catch (err) {
+    return replace(root, h("h2", {}, `Machine ${id}`), h("div", { class: "banner error", role: "alert" }, `Could not open the machine: ${err.message}`));
+  }
+  const sessions = [...(m.sessions || [])].sort((a, b) => String(a.created_at).localeCompare(String(b.created_at)));
+  const coefficients = m.coefficients || [];
+  const solved = sessions.filter((x) => x.summary).map((x) => x.id);
+  replace(root,
+    h("h2", {}, `Machine ${m.name || m.id}`, h("small", {}, ` · ${m.id}`)),
+    m.rotor ? h("p", {}, `Rotor: ${fmt(m.rotor.mass_kg, 0)} kg, service speed ${fmt(m.rotor.service_speed_rpm, 0)} rpm${m.rotor.balance_grade ? `, balance grade ${m.rotor.balance_grade}` : ""}.`) : "",
+    h("div", { class: "actions" },
+      h("button", { type: "button", class: "primary new-job", onclick: async () => go.newJob(await setupOfLatest(m), null) }, "New job for this machine"),
+      h("button", { type: "button", class: "trim-job", disabled: coefficients.length === 0, onclick: async () => go.newJob(await setupOfLatest(m), { machine: m.id }) }, "Trim job from the stored coefficients"),
+      h("button", { type: "button", class: "pool", disabled: solved.length === 0, onclick: async () => {
+        try {
+          await api.poolCoefficients(m.id, solved);
+          machinePage(root, id, go);
+        } catch (err) {
+          banner(root, "error", `The coefficients were not stored: ${err.message}`);
+        }
+      } }, "Store coefficients from the solved jobs")),
+    h("h3", {}, "Jobs over time"),
+    trend(sessions),
+    h("div", { class: "scroll" }, h("table", { class: "sessions machine-jobs" },
+      h("thead", {}, h("tr", {}, h("th", {}, "Job"), h("th", {}, "Stored"), h("th", {}, "Runs"), h("th", {}, "RMS before → after"))),
+      h("tbody", {}, sessions.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No jobs for this machine yet.")) : sessions.map((x) => h("tr", {},
+        h("td", {}, h("button", { type: "button", class: "link open-session", onclick: () => go.openSession(x.id) }, x.name || x.id)),
+        h("td", {}, when(x.created_at)), h("td", {}, String(x.runs ?? "")),
+        h("td", {}, x.summary ? `${fmt(x.summary.rms_before, 1)} → ${fmt(x.summary.rms_after, 1)}` : "not solved")))))),
+    h("h3", {}, "Coefficient versions"),
+    coefficients.length === 0 ? h("p", { class: "hint" }, "None stored yet. Solve a job with trial runs, then store the coefficients from it: later jobs can trim with only a reference run.")
+      : h("table", { class: "coeff-versions" },
+        h("thead", {}, h("tr", {}, h("th", {}, "Version"), h("th", {}, "Stored"), h("th", {}, "From jobs"))),
+        h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, when(c.created_at)), h("td", {}, String((c.sessions || []).length)))))),
+  );
+}
+
+function newMachineForm(root, go) {
+  const m = { id: "", name: "", mass: null, speed: null, grade: "" };
+  return h("fieldset", { class: "new-machine" }, h("legend", {}, "New machine"),
+    h("label", {}, "Id ", textInput({ field: "machine.id", value: "", required: true, label: "Machine id", placeholder: "e.g. ID-FAN-3", size: 14, maxlength: 64, onValue: (v) => (m.id = v) })),
+    h("label", {}, "Name ", textInput({ field: "machine.name", value: "", label: "Machine name", size: 20, onValue: (v) => (m.name = v) })),
+    h("label", {}, "Rotor mass, kg ", numberInput({ field: "machine.rotor.mass_kg", kind: "radius", value: null, required: false, label: "Rotor mass, kg", onValue: (v) => (m.mass = v) })),
+    h("label", {}, "Service speed, rpm ", numberInput({ field: "machine.rotor.service_speed_rpm", kind: "speed", value: null, required: false, label: "Service speed, rpm", onValue: (v) => (m.speed = v) })),
+    h("button", { type: "button", class: "create-machine", onclick: async () => {
+      if (!m.id) return banner(root, "error", "Give the machine an id (the name on its plate, e.g. ID-FAN-3).");
+      const body = { id: m.id, name: m.name || m.id };
+      if (m.mass && m.speed) body.rotor = { mass_kg: m.mass, service_speed_rpm: m.speed };
+      try {
+        await api.createMachine(body);
+        go.showMachine(m.id);
+      } catch (err) {
+        banner(root, "error", err.status === 409 ? `A machine called ${m.id} exists already.` : `Not stored: ${err.message}`);
+      }
+    } }, "Store machine"));
+}
+
+/** The machines page: one machine when `state.machineId` is set, else the list. */
+export async function renderMachines(root, go) {
+  if (state.machineId) return machinePage(root, state.machineId, go);
+  const list = h("tbody", {}, h("tr", {}, h("td", { colspan: 3 }, "Loading…")));
+  replace(root, h("h2", {}, "Machines"), newMachineForm(root, go),
+    h("div", { class: "scroll" }, h("table", { class: "sessions machines" },
+      h("thead", {}, h("tr", {}, h("th", {}, "Machine"), h("th", {}, "Name"), h("th", {}, "Stored"))), list)));
+  try {
+    const data = await api.listMachines();
+    const found = (data && data.machines) || [];
+    replace(list, found.length === 0 ? h("tr", {}, h("td", { colspan: 3 }, "No machines yet.")) : found.map((x) => h("tr", {},
+      h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
+      h("td", {}, x.name || ""), h("td", {}, when(x.created_at)))));
+  } catch (err) {
+    replace(list, h("tr", {}, h("td", { colspan: 3 }, `Could not list machines: ${err.message}`)));
+  }
+}

@@ -1,0 +1,70 @@
+// Where to bolt the weights on: each plane drawn as the fitter sees it, with
+// the reference mark at the top, the rotation arrow, the fixed places
+// (numbered) and the weights to fit — the kit fit when there is one, else the
+// split over two places, else the correction at its free angle. Drawn as the
+// conventions picture draws it: the rotor turning clockwise in the picture, so
+// angles against rotation run counter-clockwise.
+
+import { h, s } from "./dom.js";
+import { fmt, fmtAngle } from "./num.js";
+
+const SIZE = 240;
+const C = SIZE / 2;
+const R = 78;
+
+/** Screen point of a weight angle in the session's direction. */
+function at(angle, direction, r) {
+  const a = ((direction === "with_rotation" ? angle : -angle) * Math.PI) / 180;
+  return [C + r * Math.sin(a), C - r * Math.cos(a)];
+}
+
+/** Angles of a plane's fixed places, if it has any. */
+export function placesOf(plane) {
+  if (Array.isArray(plane.places_deg) && plane.places_deg.length) return plane.places_deg;
+  if (plane.positions) return Array.from({ length: plane.positions }, (_, k) => (360 * k) / plane.positions);
+  return [];
+}
+
+/** The weights to fit in a plane: `[{angle, mass, place?}]` and what they are. */
+export function weightsToFit(solution, correction) {
+  const fit = solution.fit && solution.fit.find((f) => f.plane === correction.plane);
+  if (fit) return { kind: "kit weights", weights: fit.weights.map((w) => ({ angle: w.angle_deg, mass: w.mass_g, place: w.place })) };
+  if (correction.split && correction.split.length) return { kind: "split over two places", weights: correction.split.map((p) => ({ angle: p.angle_deg, mass: p.mass_g, place: p.position })) };
+  return { kind: "at a free angle", weights: [{ angle: correction.angle_deg, mass: correction.mass_g }] };
+}
+
+/** The picture of one plane with its weights to fit. */
+export function planePicture(plane, solution, correction, direction) {
+  const places = placesOf(plane);
+  const found = weightsToFit(solution, correction);
+  const weights = found.weights.filter((w) => w.mass >= 0.05);
+  const kind = weights.length ? found.kind : "nothing to add";
+  const svg = s("svg", { viewBox: `0 0 ${SIZE} ${SIZE}`, class: "plane-pic", role: "img", "aria-label": `Plane ${plane.id} seen from the drive end` });
+  svg.append(s("circle", { cx: C, cy: C, r: R, class: "disc" }), s("circle", { cx: C, cy: C, r: 6, class: "shaft" }));
+  svg.append(s("path", { d: `M${C},${C - R - 14} l-6,-10 h12 z`, class: "mark" }));
+  svg.append(s("text", { x: C + 10, y: C - R - 16, class: "label" }, "mark (0°)"));
+  // Rotation: clockwise, an arc outside the disc on the right.
+  const [ax1, ay1] = at(50, "with_rotation", R + 16);
+  const [ax2, ay2] = at(110, "with_rotation", R + 16);
+  svg.append(s("path", { d: `M${ax1.toFixed(1)},${ay1.toFixed(1)} A${R + 16},${R + 16} 0 0 1 ${ax2.toFixed(1)},${ay2.toFixed(1)}`, class: "rotation" }));
+  svg.append(s("polygon", { points: `${ax2.toFixed(1)},${ay2.toFixed(1)} ${(ax2 + 2).toFixed(1)},${(ay2 - 10).toFixed(1)} ${(ax2 + 9).toFixed(1)},${(ay2 - 3).toFixed(1)}`, class: "rotation-head" }));
+  svg.append(s("text", { x: SIZE - 4, y: ay2 + 16, class: "label", "text-anchor": "end" }, "rotation"));
+  places.forEach((angle, k) => {
+    const [px, py] = at(angle, direction, R - 10);
+    const [lx, ly] = at(angle, direction, R - 24);
+    svg.append(s("circle", { cx: px, cy: py, r: 4, class: "place" }));
+    if (places.length <= 24 || k % Math.ceil(places.length / 24) === 0) svg.append(s("text", { x: lx, y: ly + 3, class: "place-label", "text-anchor": "middle" }, String(k)));
+  });
+  for (const w of weights) {
+    const [wx, wy] = at(w.angle, direction, R - 10);
+    const [lx, ly] = at(w.angle, direction, R + 30);
+    svg.append(s("circle", { cx: wx, cy: wy, r: 9, class: "weight" }));
+    svg.append(s("text", { x: lx, y: ly + 4, class: "label weight-label", "text-anchor": "middle" }, `${fmt(w.mass, 1)} g`));
+  }
+  const words = weights.map((w) => `${fmt(w.mass, 1)} g at ${fmtAngle(w.angle)}${w.place !== undefined ? ` (place ${w.place})` : ""}`).join(" + ");
+  return h("figure", { class: "plane-fig", dataset: { plane: plane.id } },
+    h("figcaption", {}, `Plane ${plane.id}: ${kind}`),
+    svg,
+    h("p", { class: "fit-words" }, words || "Nothing to fit in this plane."),
+    h("p", { class: "hint" }, `Seen from the drive end, rotor turning clockwise; angles counted ${direction === "with_rotation" ? "with" : "against"} rotation from the mark.`));
+}

@@ -1,0 +1,106 @@
+// The plots of a solution: for a job at several speeds, a Bode plot per sensor
+// and a polar plot across speeds, with the identification of a critical speed
+// when the job spans one; then the polar plot per sensor and speed, with a
+// filter so that forty plots do not bury the one wanted.
+
+import { h, replace } from "./dom.js";
+import { fmt } from "./num.js";
+import { api } from "./api.js";
+import { state, rows, readingFor, referenceRun, sessionJson } from "./state.js";
+import { polarPlot } from "./polar.js";
+import { bodePlot, nyquistPlot, SERIES, CHECK_COLOURS } from "./bode.js";
+
+const near = (a, b) => Math.abs(a - b) <= 0.01 * Math.max(a, b);
+
+/** Bode series of one sensor: as found, predicted after, each check run. */
+function bodeSeries(sol, sensor) {
+  const reference = referenceRun();
+  const speeds = state.setup.speeds;
+  const pick = (run) => speeds.map((speed) => readingFor(run, { speed, sensor })).filter(Boolean).map((r) => ({ speed: r.speed_rpm, amplitude: r.amplitude, phase: r.phase_deg }));
+  const out = [{ ...SERIES[0], points: reference ? pick(reference) : [] }];
+  out.push({ ...SERIES[1], points: sol.predicted_residual.filter((r) => r.sensor === sensor).map((r) => ({ speed: r.speed_rpm, amplitude: r.amplitude, phase: r.phase_deg })) });
+  const checks = state.runs.filter((r) => r.stored && /^check/i.test(r.id));
+  checks.forEach((run, i) => out.push({ text: `check run “${run.id}”`, colour: CHECK_COLOURS[i % CHECK_COLOURS.length], points: pick(run) }));
+  return out;
+}
+
+/** Identification of the rotor from the coefficients over the speeds (3 or more). */
+function identification(sol) {
+  const box = h("div", { class: "identification" }, h("p", { class: "hint" }, "Looking for a critical speed in the range…"));
+  const key = JSON.stringify([state.id, state.runs.length]);
+  const draw = (res) => {
+    const lo = Math.min(...state.setup.speeds);
+    const hi = Math.max(...state.setup.speeds);
+    const inside = (res.results || []).filter((r) => r.critical_speed_rpm >= lo && r.critical_speed_rpm <= hi);
+    if (!inside.length) return replace(box, h("p", { class: "hint" }, "No critical speed found inside the speeds measured."));
+    replace(box, h("h4", {}, "Critical speed inside the measured range"),
+      h("table", { class: "ident-table" },
+        h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Critical speed, rpm"), h("th", {}, "Damping ratio"), h("th", {}, "Amplification"), h("th", {}, "Margin to service speed"))),
+        h("tbody", {}, inside.map((r) => h("tr", {},
+          h("td", {}, r.sensor), h("td", {}, r.plane), h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0)),
+          h("td", {}, fmt(r.damping_ratio, 3)), h("td", {}, fmt(r.amplification_factor, 1)),
+          h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "give the service speed in the set-up"
+            : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`))))));
+  };
+  if (identification.cache && identification.cache.key === key) draw(identification.cache.res);
+  else {
+    api.identifyRotor(sessionJson()).then((res) => {
+      identification.cache = { key, res };
+      draw(res);
+    }, () => replace(box, h("p", { class: "hint" }, "The rotor could not be identified from these speeds (too few, or no resonance in the range).")));
+  }
+  return box;
+}
+
+function polarFor(sol, row) {
+  const reference = referenceRun();
+  const ref = reference && readingFor(reference, row);
+  if (!ref) return "";
+  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0);
+  const sensors = new Map(state.setup.sensors.map((x) => [x.id, x]));
+  const residual = sol.predicted_residual.find((p) => p.sensor === row.sensor && near(p.speed_rpm, row.speed));
+  return polarPlot({
+    sensor: row.sensor,
+    unit: (sensors.get(row.sensor) || {}).unit,
+    speed: row.speed,
+    phase: (sol.conventions || state.setup.conventions).phase,
+    reference: ref,
+    trials: trials.map((t) => ({ id: t.id, ...readingFor(t, row) })).filter((t) => t.amplitude !== undefined),
+    residual,
+  });
+}
+
+/** The polar plots per sensor and speed, behind a filter when there are many. */
+function polarSection(sol) {
+  const all = rows();
+  const filter = state.polarFilter || (state.polarFilter = { sensor: "", speed: all.length > 8 ? String(state.setup.speeds[0]) : "" });
+  const grid = h("div", { class: "plots" });
+  const draw = () => replace(grid, all.filter((r) => (!filter.sensor || r.sensor === filter.sensor) && (!filter.speed || String(r.speed) === filter.speed)).map((r) => polarFor(sol, r)));
+  draw();
+  const select = (label, cls, key, choices) => h("label", {}, `${label} `, h("select", { class: cls, onchange: (e) => { filter[key] = e.target.value; draw(); } },
+    h("option", { value: "", selected: !filter[key] }, "all"),
+    choices.map(([v, t]) => h("option", { value: v, selected: filter[key] === v }, t))));
+  return [
+    h("h3", {}, "Polar plots"),
+    all.length > 1 ? h("div", { class: "polar-filter" },
+      select("Sensor", "filter-sensor", "sensor", state.setup.sensors.map((x) => [x.id, x.id])),
+      state.setup.speeds.length > 1 ? select("Speed", "filter-speed", "speed", state.setup.speeds.map((x) => [String(x), `${fmt(x, 0)} rpm`])) : "") : "",
+    grid,
+  ];
+}
+
+export function plotsSection(sol) {
+  const multi = state.setup.speeds.length > 1;
+  const sensors = new Map(state.setup.sensors.map((x) => [x.id, x]));
+  const phase = (sol.conventions || state.setup.conventions).phase;
+  return h("div", { class: "all-plots" },
+    multi ? [
+      h("h3", {}, "Across the speeds"),
+      h("div", { class: "bode-plots" }, state.setup.sensors.map((x) => [
+        bodePlot({ sensor: x.id, unit: x.unit, phase, series: bodeSeries(sol, x.id) }),
+        nyquistPlot({ sensor: x.id, unit: (sensors.get(x.id) || {}).unit, phase, points: bodeSeries(sol, x.id)[0].points }),
+      ])),
+      state.setup.speeds.length >= 3 ? identification(sol) : "",
+    ] : "",
+    polarSection(sol));
+}

@@ -1,0 +1,60 @@
+// The service's warnings in the technician's words: what happened and what to
+// do, never an option name, a field path or a code. Also the rule for an
+// answer that should not be trusted as it stands (wide 95 % figures, a trial
+// that moved the vibration too little), shown greyed with the reason.
+
+import { fmt, angleDiff } from "./num.js";
+
+const quoted = (message, fallback) => {
+  const m = /'([^']+)'/.exec(message || "");
+  return m ? `“${m[1]}”` : fallback;
+};
+
+/** Per warning code: `[what happened, what to do]`. */
+const PLAIN = {
+  trial_effect_small: (w) => [`The trial weight${w.plane ? ` in plane ${w.plane}` : ""} moved the vibration too little to measure its effect.`, "Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase)."],
+  ill_conditioned: () => ["Two planes look almost the same to the sensors, so the corrections may be large and cancel each other.", "Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out planes the sensors cannot tell apart” in the options)."],
+  mass_limit_active: (w) => [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set.`, "The vibration left will be larger than without the limit; raise the limit if the plane can take more."],
+  mixed_units: () => ["The sensors use different units, so the sum over them mixes units.", "Leave out the sensors of one unit, or accept that the larger numbers count more."],
+  plane_undetermined: (w) => [`The readings cannot tell what plane ${w.plane || ""} needs: its trial weight changed nothing that the sensors see on their own.`, `Repeat the trial in plane ${w.plane || "that plane"} with a heavier weight or at a larger radius, add a sensor that sees it, or leave the plane out.`],
+  uncertainty_approximate: () => ["With this objective or a mass limit that is reached, the 95 % figures are an estimate.", "Read them as the scatter to expect, not as exact bounds."],
+  run_inconsistent: (w) => [`Run ${quoted(w.message, "")} does not agree with what the other runs predict for its weights, by more than the readings' scatter explains.`, "Check that run's weights (mass, angle, plane; a weight that fell off or was left on) and its readings; correct the run if one was typed wrong. A rotor that is not linear does this too."],
+  coefficients_disagree: () => ["The runs of this job do not agree with the stored coefficients of the machine.", "The rotor or its mounting may have changed since they were measured, or a weight was typed wrong: check the weights, or do trial runs for this job."],
+  split_approximate: (w) => [`The correction${w.plane ? ` in plane ${w.plane}` : ""} cannot be split exactly over two neighbouring places.`, "Use the places shown and check with a run, or fit the weight at its free angle if the plane allows it."],
+  fit_not_proven: () => ["The choice of kit weights is the best found in the time allowed, not proven the best.", "It is usually good enough; check with a run."],
+};
+
+/** `{what, todo}` for a warning. */
+export function plainWarning(w) {
+  const f = PLAIN[w.code];
+  if (f) {
+    const [what, todo] = f(w);
+    return { what, todo };
+  }
+  // An unknown code: the service's own sentence, without option names or code words.
+  const text = String(w.message || "").replace(/`[^`]*`/g, "").replace(/\(?\b[a-z]+(?:[._][a-z0-9_]+)+\b\)?/g, "").replace(/\s+/g, " ").trim();
+  return { what: text ? text[0].toUpperCase() + text.slice(1) : "The service warned about this answer.", todo: "" };
+}
+
+/**
+ * Why a correction should not be trusted as it stands, in words, with what to
+ * do; null when it can be. Wide means a 95 % mass interval wider than ±25 % of
+ * the mass or an angle interval wider than ±20°.
+ */
+export function doubt(solution, c) {
+  // Nothing to add (a trim that leaves a plane as it is): nothing to doubt either.
+  if (solution.from_run && c.mass_g < 0.05) return null;
+  const small = solution.warnings.some((w) => (w.code === "trial_effect_small" || w.code === "plane_undetermined") && (!w.plane || w.plane === c.plane));
+  if (small) return `The trial weight in plane ${c.plane} was too small to measure its effect, so this correction may be far off. Repeat the trial run in plane ${c.plane} with a bigger weight before fitting it.`;
+  const u = c.uncertainty;
+  if (!u) return null;
+  if (!u.mass_g || u.angle_deg[1] - u.angle_deg[0] >= 359.999) {
+    return `The scatter of the readings could account for the whole correction in plane ${c.plane}: its angle is not known. Repeat the trial run with a bigger weight, or take the readings again, before fitting it.`;
+  }
+  const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
+  const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
+  if (dm > 0.25 * c.mass_g || da > 20) {
+    return `The 95 % figures for plane ${c.plane} are wide (± ${fmt(dm, 1)} g, ± ${fmt(da, 0)}°): the weight may be well off. Fit it, then do a check run and trim; or repeat the trial run with a bigger weight first.`;
+  }
+  return null;
+}

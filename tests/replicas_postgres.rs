@@ -198,7 +198,7 @@ async fn concurrent_writers_on_two_replicas_store_every_acknowledged_write_exact
         urls[0]
     )))
     .await;
-    let listed: Vec<i64> = versions["versions"]
+    let listed: Vec<i64> = versions
         .as_array()
         .unwrap()
         .iter()

@@ -13,12 +13,7 @@ WORK=$(mktemp -d)
 trap 'kill "$PID" 2>/dev/null; wait "$PID" 2>/dev/null; rm -rf "$WORK"' EXIT
 
 cargo build --release --quiet
-python3 - "$WORK" <<'PY'
-import json, sys
-ex = json.load(open("tests/data/examples/pump-two-plane-exact.json"))
-json.dump({"session": ex["session"], "options": ex["options"]}, open(sys.argv[1] + "/solve.json", "w"))
-json.dump(ex["session"], open(sys.argv[1] + "/session.json", "w"))
-PY
+python3 benches/bodies.py "$WORK"
 
 RUST_LOG=${RUST_LOG:-info} ./target/release/fieldbal serve --listen "$ADDR" \
   --database "$WORK/load.db" >"$WORK/server.log" 2>&1 &

@@ -1,6 +1,7 @@
 //! Connections: a header that never ends is cut off, an idle kept-alive
-//! connection is closed, connections beyond the cap are refused while the
-//! others are served, and SIGTERM is not held up by a half-open connection.
+//! connection is closed, a client that stops reading its answers is
+//! disconnected, connections beyond the cap are refused while the others are
+//! served, and SIGTERM is not held up by a half-open connection.
 
 mod common;
 mod edge_support;
@@ -9,8 +10,8 @@ use std::time::Duration;
 
 use fieldbal::http::edge::connections::Limits;
 use fieldbal::http::edge::EdgeConfig;
-use tokio::io::AsyncWriteExt;
-use tokio::net::TcpStream;
+use tokio::io::{AsyncReadExt, AsyncWriteExt};
+use tokio::net::{TcpSocket, TcpStream};
 
 use common::{send, start_server_configured};
 use edge_support::{closed_without_answer, read_answer, start_binary, terminate};
@@ -64,6 +65,51 @@ async fn an_idle_kept_alive_connection_is_closed_after_the_header_timeout() {
     assert_eq!(answer.status, 200);
     assert_ne!(answer.header("connection"), Some("close"), "kept alive");
     assert!(closed_without_answer(&mut stream).await);
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn a_client_that_stops_reading_its_answers_is_disconnected_after_the_write_timeout() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut edge = limits(30, 64);
+    edge.connections.write_timeout = Duration::from_secs(1);
+    let (addr, server) =
+        start_server_configured(&dir.path().join("t.db"), |s| s.with_edge(edge)).await;
+    let client = reqwest::Client::new();
+    let (status, _, document) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    assert_eq!(status, 200);
+    let one = document.to_string().len();
+    // Pipeline far more answer bytes than the two socket buffers hold, read none.
+    let requests = (64 * 1024 * 1024 / one).max(64);
+    let socket = TcpSocket::new_v4().unwrap();
+    socket.set_recv_buffer_size(4096).unwrap();
+    let mut stream = socket.connect(addr).await.expect("connect");
+    let request = format!("GET /api/v1/openapi.json HTTP/1.1\r\nHost: {addr}\r\n\r\n");
+    let all = request.repeat(requests);
+    // The server stops reading requests once its answers are stuck: send what it takes.
+    let _ = tokio::time::timeout(Duration::from_secs(3), stream.write_all(all.as_bytes())).await;
+    tokio::time::sleep(Duration::from_secs(3)).await;
+    // Now read: a disconnected stream ends (EOF or reset) well before all the answers.
+    let mut received = 0usize;
+    let mut buf = vec![0u8; 1 << 16];
+    let ended = tokio::time::timeout(Duration::from_secs(20), async {
+        loop {
+            match stream.read(&mut buf).await {
+                Ok(0) | Err(_) => break,
+                Ok(n) => received += n,
+            }
+        }
+    })
+    .await
+    .is_ok();
+    assert!(ended, "the connection was closed by the server");
+    assert!(
+        received < requests * one,
+        "only part of the {requests} answers arrived ({received} bytes of {})",
+        requests * one
+    );
+    let (status, _, _) = send(client.get(server.url("/healthz"))).await;
+    assert_eq!(status, 200, "the service still answers");
     server.shutdown().await;
 }
 

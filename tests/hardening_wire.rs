@@ -61,6 +61,50 @@ async fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
 }
 
 /// Every number in `v`, with its path; panics on a null where a number was.
+#[tokio::test]
+async fn every_request_type_refuses_a_positional_array() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    let client = reqwest::Client::new();
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    let residual: Value = serde_json::from_str(
+        &std::fs::read_to_string("tests/data/residual/left-plane-12-positions.json").unwrap(),
+    )
+    .unwrap();
+    let as_array =
+        |v: &Value| -> Value { Value::Array(v.as_object().unwrap().values().cloned().collect()) };
+    // (path, body, field named): the body or one of its structs as an array.
+    let cases: Vec<(&str, Value, Option<&str>)> = vec![
+        ("/api/v1/trial-weights", json!([session, {}]), None),
+        (
+            "/api/v1/trial-weights",
+            json!({"session": session, "options": []}),
+            Some("options"),
+        ),
+        ("/api/v1/residual-unbalance", as_array(&residual), None),
+        ("/api/v1/identify/rotor", json!([session, {}]), None),
+        (
+            "/api/v1/identify/rotor",
+            json!({"session": session, "options": []}),
+            Some("options"),
+        ),
+        (
+            "/api/v1/identify/free-decay",
+            json!([0.001, [1.0, 0.5]]),
+            None,
+        ),
+        ("/api/v1/identify/model", json!([[[1.0]], [[1.0]]]), None),
+    ];
+    for (path, body, field) in cases {
+        let (status, _, answer) = post(&client, &server.url(path), &body).await;
+        assert_eq!(status, 422, "{path} {body}: {answer}");
+        assert_eq!(answer["error"]["code"], "invalid_type", "{path}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(message.contains("not an array"), "{path}: {message}");
+        assert_eq!(answer["error"]["field"].as_str(), field, "{path} {body}");
+    }
+}
+
 fn assert_no_null(v: &Value, path: &str) {
     match v {
         Value::Null => panic!("null at {path}"),

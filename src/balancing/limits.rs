@@ -72,8 +72,19 @@ pub fn too_large(field: impl Into<String>, what: &str, n: usize, limit: usize) -
 }
 
 fn at_most(field: &str, what: &str, n: usize, limit: usize) -> Result<(), InputError> {
+    at_most_at(|| field.to_string(), what, n, limit)
+}
+
+/// `at_most` for a field path that is built only when the count is over: the
+/// checks below run on every reading of every request.
+fn at_most_at(
+    field: impl FnOnce() -> String,
+    what: &str,
+    n: usize,
+    limit: usize,
+) -> Result<(), InputError> {
     if n > limit {
-        return Err(too_large(field, what, n, limit));
+        return Err(too_large(field(), what, n, limit));
     }
     Ok(())
 }
@@ -100,16 +111,16 @@ pub fn check_session(session: &Session, limits: &Limits) -> Result<(), InputErro
         // A weight per plane is all a run can mean; more only costs time.
         let weights = run.weights.len();
         let weight_limit = limits.planes.max(1) * 16;
-        at_most(
-            &format!("runs[{i}].weights"),
+        at_most_at(
+            || format!("runs[{i}].weights"),
             "weights in one run",
             weights,
             weight_limit,
         )?;
         for (j, r) in run.readings.iter().enumerate() {
             let n = r.samples.as_ref().map_or(0, Vec::len);
-            at_most(
-                &format!("runs[{i}].readings[{j}].samples"),
+            at_most_at(
+                || format!("runs[{i}].readings[{j}].samples"),
                 "samples of one reading",
                 n,
                 limits.samples_per_reading,

@@ -67,9 +67,9 @@ pub fn least_squares(
 /// The correction for the weighted problem, with any warnings the method adds.
 ///
 /// Extension point: the objective and mass bounds of `options` choose the
-/// method here; plain least squares is the default. (The errors-in-variables
-/// bias correction `uncertainty::bias` is not applied here yet: with the
-/// assumed default noise it also moves the answer of exact readings, issue 12.)
+/// method here; plain least squares is the default. The errors-in-variables
+/// bias is removed after, by `uncertainty::debiased`, only where the noise is
+/// evidenced (issue 12).
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
@@ -87,7 +87,16 @@ fn correction(
 /// Solve a session: influence coefficients, corrections, predicted residual,
 /// diagnostics, in the session's conventions.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
-    let checked = check(session)?;
+    solve_checked(session, check(session)?, options)
+}
+
+/// [`solve`] of a session already validated (`checked` is `check(session)`):
+/// validation is a large share of a small solve, so it runs once per request.
+pub fn solve_checked<'a>(
+    session: &'a Session,
+    checked: Checked<'a>,
+    options: &SolveOptions,
+) -> Result<Solution, InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
     let supplied = super::job::supplied::resolve(&checked, options)?;
     let w = match &supplied {
@@ -136,6 +145,20 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
     let (c, warnings) = correction(&a, &b, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);
+    // Errors-in-variables bias removed where the noise is evidenced (issue 12).
+    let c = match &supplied {
+        None => uncertainty::debiased(
+            &checked,
+            &cov,
+            &selection.rows,
+            &selection.weights,
+            &planes,
+            options,
+            warnings.iter().any(|w| w.code == "mass_limit_active"),
+            c,
+        ),
+        Some(_) => c,
+    };
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
     let residual = checked.y.column(0) + &w_used * &c;
 

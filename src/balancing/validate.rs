@@ -81,11 +81,11 @@ fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {
     InputError::invalid("invalid_value", field, message)
 }
 
-fn check_id(field: &str, id: &str) -> Result<(), InputError> {
+fn check_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> {
     let n = id.chars().count();
     if n == 0 || n > 64 {
         return Err(invalid(
-            field,
+            field(),
             format!("ids are 1 to 64 characters; this one has {n}"),
         ));
     }
@@ -159,12 +159,13 @@ fn unique_ids<'s>(
 ) -> Result<HashMap<&'s str, usize>, InputError> {
     let mut seen = HashMap::new();
     for (i, id) in ids.enumerate() {
-        let f = format!("{field}[{i}].id");
-        check_id(&f, id)?;
+        // Built only for an error: this runs for every id of every request.
+        let f = || format!("{field}[{i}].id");
+        check_id(f, id)?;
         if seen.insert(id, i).is_some() {
             return Err(InputError::invalid(
                 "duplicate_id",
-                f,
+                f(),
                 format!("the id '{id}' is used twice"),
             ));
         }

@@ -1,23 +1,25 @@
 //! Identification endpoints (`/api/v1/identify/…`): stateless, like `/solve`;
-//! the work runs off the async workers.
+//! the work runs off the async workers in one of the solve slots.
 
+use axum::extract::State;
 use axum::Json;
 
-use super::error::{ApiError, ErrorBody};
+use super::error::ErrorBody;
 use super::extract::JsonBody;
+use super::work::Refused;
+use super::AppState;
 use crate::balancing::InputError;
 use crate::identification::{
     correct, decay, rotor, FreeDecay, FreeDecayRequest, ModelCorrection, ModelRequest,
     RotorIdentification, RotorRequest,
 };
 
+/// Fits and eigen-solves cost like a solve: they share its slots (503 when busy).
 async fn blocking<T: Send + 'static>(
+    state: &AppState,
     work: impl FnOnce() -> Result<T, InputError> + Send + 'static,
-) -> Result<Json<T>, ApiError> {
-    let out = tokio::task::spawn_blocking(work)
-        .await
-        .map_err(|e| ApiError::internal(&e))??;
-    Ok(Json(out))
+) -> Result<Json<T>, Refused> {
+    Ok(Json(state.solves.solve(work).await??))
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/rotor", tag = "identification",
@@ -26,11 +28,13 @@ async fn blocking<T: Send + 'static>(
         (status = 200, description = "Per sensor and plane: critical speed, damping ratio, API 684 amplification factor and separation margin", body = RotorIdentification),
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 422, description = "Invalid session or options, too few speeds", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn rotor(
+    State(state): State<AppState>,
     JsonBody(req): JsonBody<RotorRequest>,
-) -> Result<Json<RotorIdentification>, ApiError> {
-    blocking(move || rotor::identify(&req)).await
+) -> Result<Json<RotorIdentification>, Refused> {
+    blocking(&state, move || rotor::identify(&req)).await
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/free-decay", tag = "identification",
@@ -39,11 +43,13 @@ pub async fn rotor(
         (status = 200, description = "Natural frequency, damping, decrement, amplitude and phase", body = FreeDecay),
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 422, description = "Too few samples, a non-positive step, or samples that do not decay", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn free_decay(
+    State(state): State<AppState>,
     JsonBody(req): JsonBody<FreeDecayRequest>,
-) -> Result<Json<FreeDecay>, ApiError> {
-    blocking(move || decay::identify(&req)).await
+) -> Result<Json<FreeDecay>, Refused> {
+    blocking(&state, move || decay::identify(&req)).await
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/model", tag = "identification",
@@ -52,9 +58,11 @@ pub async fn free_decay(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 422, description = "Non-square or asymmetric matrix, a shape of the wrong length, too few modes", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn model(
+    State(state): State<AppState>,
     JsonBody(req): JsonBody<ModelRequest>,
-) -> Result<Json<ModelCorrection>, ApiError> {
-    blocking(move || correct::correct(&req)).await
+) -> Result<Json<ModelCorrection>, Refused> {
+    blocking(&state, move || correct::correct(&req)).await
 }

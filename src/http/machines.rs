@@ -143,6 +143,7 @@ pub async fn delete(
 
 /// The body of `POST /api/v1/machines/{id}/coefficients`.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct PoolRequest {
     /// Ids of stored sessions of this machine.
@@ -320,3 +321,6 @@ pub async fn resolve(
     });
     Ok(options)
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(PoolRequest);

@@ -4,9 +4,10 @@
 use axum::extract::State;
 use axum::Json;
 
-use super::error::{ApiError, ErrorBody};
+use super::error::ErrorBody;
 use super::extract::JsonBody;
 use super::solve::within_solve_request;
+use super::work::Refused;
 use super::AppState;
 use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
 
@@ -32,15 +33,22 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
         (status = 413, description = "Body over the limit", body = ErrorBody),
         (status = 415, description = "Not application/json", body = ErrorBody),
         (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn trial_weights(
     State(state): State<AppState>,
     JsonBody(req): JsonBody<TrialRequest>,
-) -> Result<Json<TrialResponse>, ApiError> {
+) -> Result<Json<TrialResponse>, Refused> {
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
     let conventions = req.session.conventions.unwrap_or_default();
     let options =
         super::machines::resolve(&state, conventions, req.options, within_solve_request).await?;
-    let suggestions = suggest(&req.session, &options, None).map_err(within_solve_request)?;
+    // Validating and solving the session costs like a solve: off the async
+    // threads, in one of the solve slots.
+    let session = req.session;
+    let suggestions = state
+        .solves
+        .solve(move || suggest(&session, &options, None).map_err(within_solve_request))
+        .await??;
     Ok(Json(TrialResponse { suggestions }))
 }

@@ -32,6 +32,7 @@ pub enum DampingLaw {
 
 /// The body of `POST /api/v1/identify/free-decay`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct FreeDecayRequest {
     /// The decay `y_k = y(k·dt_s)`, at least 8 samples, any unit.
@@ -218,6 +219,9 @@ fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
         fit_rms,
     })
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(FreeDecayRequest);
 
 #[cfg(test)]
 mod tests {

@@ -15,6 +15,7 @@ pub const MAX_DOF: usize = 200;
 
 /// A matrix family `A0 + Σ pᵢ Aᵢ`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct MatrixFamily {
     /// `A0`, rows.
@@ -26,6 +27,7 @@ pub struct MatrixFamily {
 
 /// A measured mode.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Mode {
     pub frequency_hz: f64,
@@ -39,6 +41,7 @@ pub struct Mode {
 
 /// Starting parameters (default 1 each): used to fill unmeasured shape entries.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Initial {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -49,6 +52,7 @@ pub struct Initial {
 
 /// The body of `POST /api/v1/identify/model`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct ModelRequest {
     pub mass: MatrixFamily,
@@ -254,3 +258,6 @@ pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
         initial: start,
     })
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(MatrixFamily, Mode, Initial, ModelRequest);

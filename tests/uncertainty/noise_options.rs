@@ -80,8 +80,10 @@ fn the_scatter_of_samples_is_used_instead_of_the_options() {
         &session(LAG_AGAINST, &rotor.trial, &y, Some(&doubled)),
         &options(0.5, 0.5),
     );
+    // First order exactly 4; the second-order term (1 + κ) grows with the
+    // noise too (κ four times larger), which adds a little.
     let ratio = var(&louder) / var(&quiet_options);
-    assert!((3.6..4.0).contains(&ratio), "{ratio}");
+    assert!((3.6..4.6).contains(&ratio), "{ratio}");
 }
 
 /// Warnings of one code and plane.

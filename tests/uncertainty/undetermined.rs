@@ -1,5 +1,6 @@
 //! Issue 12, items 3 and 5: planes the readings cannot determine, speed points
-//! that must not chain, a zero correction's angle, and one reading's grammar.
+//! that must not chain, a zero correction's angle, one reading's grammar, and
+//! a mass bound binding by a hair on an ill-conditioned job.
 
 use fieldbal::balancing::model::SolveOptions;
 use fieldbal::balancing::{self, ErrorKind};
@@ -119,4 +120,35 @@ fn one_selected_reading_is_one_not_one_are() {
     };
     let err = balancing::solve(&s, &options).unwrap_err();
     assert!(err.message.ends_with("1 is selected"), "{}", err.message);
+}
+
+#[test]
+fn a_mass_bound_binding_by_a_hair_on_an_ill_conditioned_job_is_reported_active() {
+    // Plane P1 seen almost exactly like P0 and a thousand times more weakly:
+    // a badly conditioned job, where the cone solver stops short of a bound
+    // by solver accuracy.
+    let rotor = Rotor::two_plane(0.8);
+    let mut w = rotor.w.clone();
+    let col = w.column(0) * c(1e-3, 2e-4) + w.column(1) * c(2e-6, 0.0);
+    w.set_column(1, &col);
+    let rotor = Rotor::with_trials(w, rotor.c.clone(), rotor.y0.clone(), 0.8);
+    let s = session(LEAD_WITH, &rotor.trial, &rotor.readings(), None);
+    let free = solve(&s, &SolveOptions::default());
+    assert!(free.warnings.iter().all(|w| w.code != "mass_limit_active"));
+    for hair in [1.3e-5, 1e-4] {
+        let m = free.corrections[1].mass_g * (1.0 - hair);
+        let options = SolveOptions {
+            max_mass_g: Some([("P1".to_string(), m)].into_iter().collect()),
+            ..SolveOptions::default()
+        };
+        let bound = solve(&s, &options);
+        assert!(bound.corrections[1].mass_g <= m, "{hair}");
+        let active: Vec<_> = bound
+            .warnings
+            .iter()
+            .filter(|w| w.code == "mass_limit_active")
+            .filter_map(|w| w.plane.as_deref())
+            .collect();
+        assert_eq!(active, ["P1"], "{hair}: {:?}", bound.warnings);
+    }
 }

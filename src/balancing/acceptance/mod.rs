@@ -21,6 +21,7 @@ pub const DEFAULT_PHASE_NOISE_DEG: f64 = 2.0;
 
 /// The trial weight moved from position to position.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct TrialWeight {
     pub mass_g: f64,
@@ -29,6 +30,7 @@ pub struct TrialWeight {
 
 /// The 1X reading with the trial weight at one position.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct PositionReading {
     /// Where the trial weight sits, in the request's `angle_direction`.
@@ -43,6 +45,7 @@ pub struct PositionReading {
 /// The body of `POST /api/v1/residual-unbalance` (`docs/session-format.md`,
 /// "Residual-unbalance check").
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct ResidualRequest {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -162,3 +165,6 @@ pub fn check(req: &ResidualRequest) -> Result<ResidualCheck, InputError> {
 pub fn allowable_gmm(journal_load_kg: f64, speed_rpm: f64) -> f64 {
     6350.0 * journal_load_kg / speed_rpm
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(TrialWeight, PositionReading, ResidualRequest);

@@ -208,6 +208,7 @@ pub fn suggest(
 
 /// The body of `POST /api/v1/trial-weights`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct TrialRequest {
     /// A session; its reference run alone is enough.
@@ -223,3 +224,6 @@ pub struct TrialRequest {
 pub struct TrialResponse {
     pub suggestions: Vec<TrialSuggestion>,
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(TrialRequest);

@@ -51,8 +51,11 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
                 })?,
         ),
     };
-    let rebased = from.map(|r| rebase(session, r));
-    let mut solution = one_shot::solve(rebased.as_ref().unwrap_or(session), options)?;
+    let mut solution = match from {
+        // The session as posted is validated once, above.
+        None => one_shot::solve_checked(session, checked.clone(), options)?,
+        Some(r) => one_shot::solve(&rebase(session, r), options)?,
+    };
 
     if let Some(r) = from {
         let conv = checked.conventions;

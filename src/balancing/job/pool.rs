@@ -27,6 +27,7 @@ use crate::balancing::validate::check;
 
 /// Options of a pooling.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct PoolOptions {
     /// Leave out the sessions named in `coefficients_disagree`.
@@ -302,3 +303,6 @@ pub fn convert(
         })
         .collect()
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(PoolOptions);

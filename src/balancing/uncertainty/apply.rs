@@ -6,8 +6,9 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 use super::{
-    amplitude_95, correction_uncertainty, propagate, reading_noise, DEFAULT_AMPLITUDE_NOISE_PCT,
-    DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
+    correction_uncertainty, propagate, reading_noise, remaining_amplitude_95, through_correction,
+    DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT,
+    MAX_PHASE_NOISE_DEG,
 };
 use crate::balancing::diagnostics::undetermined_planes;
 use crate::balancing::error::InputError;
@@ -118,14 +119,16 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
 
     let (a, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
     let undetermined = undetermined_planes(&a);
-    for (((corr, &c), cc), &lost) in solution
+    let kappas = super::kappa(fit, &prop);
+    for ((((corr, &c), cc), &lost), &k) in solution
         .corrections
         .iter_mut()
         .zip(fit.c.iter())
         .zip(&prop.correction)
         .zip(&undetermined)
+        .zip(&kappas)
     {
-        let mut u = correction_uncertainty(c, cc, conv);
+        let mut u = correction_uncertainty(c, &super::second_order(cc, k), conv);
         if lost {
             // Any mass fits the readings as well along the undetermined
             // combination: no interval can be given (issue 12).
@@ -142,13 +145,16 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         }
         corr.uncertainty = Some(u);
     }
-    for ((res, &r), rc) in solution
+    // The remaining vibration's bound (issue 12, `remaining`).
+    for (a, (res, &r)) in solution
         .predicted_residual
         .iter_mut()
         .zip(fit.residual.iter())
-        .zip(&prop.residual)
+        .enumerate()
     {
-        res.amplitude_95 = Some(amplitude_95(r, rc));
+        let w_row: Vec<Complex64> = fit.planes.iter().map(|&j| fit.w[(a, j)]).collect();
+        let through = through_correction(&w_row, &prop.correction_full);
+        res.amplitude_95 = Some(remaining_amplitude_95(r, &prop.prediction[a], &through));
     }
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {
@@ -191,6 +197,9 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             }),
         }
     }
+
+    // Coefficients' noise beside their signal: the trial too small to trust (issue 12).
+    super::warn_untrusted(fit, &kappas, solution);
 
     let min_max = options.objective == Some(Objective::MinMax);
     let bound = solution

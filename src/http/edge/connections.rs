@@ -1,6 +1,7 @@
 //! The accept loop: HTTP/1.1 connections served by hyper with a header-read
-//! timeout, a cap on open connections and a bounded graceful shutdown, so half-sent
-//! headers can neither exhaust the service nor hold SIGTERM forever.
+//! timeout, a write timeout, a cap on open connections and a bounded graceful
+//! shutdown, so neither half-sent headers nor a client that stops reading its
+//! answers can exhaust the service or hold SIGTERM forever.
 //! (`axum::serve` offers none of these settings.)
 
 use std::future::Future;
@@ -15,6 +16,10 @@ use tokio::task::JoinSet;
 use tower::ServiceExt;
 
 pub const DEFAULT_HEADER_READ_TIMEOUT_SECS: u64 = 10;
+/// Longest a write to a client may make no progress: the largest answer (a
+/// solution of a big session, some MiB) reaches a live client on a slow
+/// network within it.
+pub const DEFAULT_WRITE_TIMEOUT_SECS: u64 = 30;
 /// Below the unit's `LimitNOFILE=4096`, leaving room for the database and logs.
 pub const DEFAULT_MAX_CONNECTIONS: usize = 1024;
 /// Below the unit's `TimeoutStopSec=30`.
@@ -26,6 +31,9 @@ pub struct Limits {
     /// Longest wait for a complete request header; hyper starts this clock
     /// whenever it waits for a request, so it also ends idle kept-alive connections.
     pub header_read_timeout: Duration,
+    /// Longest time a write to the client may stay blocked (a client that
+    /// stops reading with a full socket buffer); then the connection is closed.
+    pub write_timeout: Duration,
     /// Most connections served at once; beyond it a connection gets a 503 and is closed.
     pub max_connections: usize,
     /// After the shutdown signal, longest wait for open connections.
@@ -36,6 +44,7 @@ impl Default for Limits {
     fn default() -> Self {
         Limits {
             header_read_timeout: Duration::from_secs(DEFAULT_HEADER_READ_TIMEOUT_SECS),
+            write_timeout: Duration::from_secs(DEFAULT_WRITE_TIMEOUT_SECS),
             max_connections: DEFAULT_MAX_CONNECTIONS,
             shutdown_grace: Duration::from_secs(DEFAULT_SHUTDOWN_GRACE_SECS),
         }
@@ -119,7 +128,11 @@ async fn serve_one(
         .header_read_timeout(limits.header_read_timeout)
         // Above the limit the edge answers with the JSON 431 (protocol.rs).
         .max_headers(2 * super::protocol::MAX_HEADERS);
-    let conn = builder.serve_connection(TokioIo::new(stream), service);
+    // hyper has no write timeout: the stream enforces one, so a client that
+    // never reads cannot hold its connection (and a slot of the cap) forever.
+    let mut io = tokio_io_timeout::TimeoutStream::new(stream);
+    io.set_write_timeout(Some(limits.write_timeout));
+    let conn = builder.serve_connection(TokioIo::new(Box::pin(io)), service);
     tokio::pin!(conn);
     // The guard `wait_for` returns is not `Send`: drop it inside.
     let stopping = async move {

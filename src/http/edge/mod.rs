@@ -35,6 +35,10 @@ pub struct EdgeArgs {
     /// requests on a kept-alive connection, seconds.
     #[arg(long, env = "FIELDBAL_HEADER_READ_TIMEOUT_SECS", default_value_t = connections::DEFAULT_HEADER_READ_TIMEOUT_SECS)]
     pub header_read_timeout_secs: u64,
+    /// Longest time a write to a client may make no progress (a client that
+    /// stopped reading), seconds; then the connection is closed.
+    #[arg(long, env = "FIELDBAL_WRITE_TIMEOUT_SECS", default_value_t = connections::DEFAULT_WRITE_TIMEOUT_SECS)]
+    pub write_timeout_secs: u64,
     /// Most connections open at once; more are answered 503 and closed.
     #[arg(long, env = "FIELDBAL_MAX_CONNECTIONS", default_value_t = connections::DEFAULT_MAX_CONNECTIONS)]
     pub max_connections: usize,
@@ -61,6 +65,7 @@ impl EdgeConfig {
             hosts: hosts::AllowedHosts::parse(&args.allowed_hosts),
             connections: connections::Limits {
                 header_read_timeout: Duration::from_secs(args.header_read_timeout_secs.max(1)),
+                write_timeout: Duration::from_secs(args.write_timeout_secs.max(1)),
                 max_connections: args.max_connections.max(1),
                 shutdown_grace: Duration::from_secs(args.shutdown_grace_secs),
             },

@@ -31,6 +31,7 @@ pub enum CrossCoupling {
 
 /// Options of `identify/rotor`; all optional.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct RotorOptions {
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -54,6 +55,7 @@ pub struct RotorOptions {
 
 /// The body of `POST /api/v1/identify/rotor`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct RotorRequest {
     pub session: Session,
@@ -112,3 +114,6 @@ pub struct RotorIdentification {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Warning>,
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(RotorOptions, RotorRequest);

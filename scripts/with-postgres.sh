@@ -29,6 +29,7 @@ stop() {
   rm -rf "$tmp"
 }
 trap stop EXIT
+trap 'exit 130' INT TERM
 
 "${as_owner[@]}" "$bin/initdb" -D "$tmp/data" -U fieldbal --auth=trust -E UTF8 --no-sync >"$tmp/initdb.log" 2>&1 \
   || { cat "$tmp/initdb.log"; exit 1; }

@@ -22,14 +22,14 @@ use serde_json::Value;
 /// failed, which SQLite's own rollback on SQLITE_FULL makes happen).
 static MAX_PAGES: AtomicI64 = AtomicI64::new(1_000_000);
 
-async fn page_count(pool: &sqlx::SqlitePool) -> i64 {
+async fn page_count(pool: &sqlx::AnyPool) -> i64 {
     sqlx::query_scalar("PRAGMA page_count")
         .fetch_one(pool)
         .await
         .unwrap()
 }
 
-async fn set_max_pages(pool: &sqlx::SqlitePool, pages: i64) {
+async fn set_max_pages(pool: &sqlx::AnyPool, pages: i64) {
     MAX_PAGES.store(pages, Ordering::SeqCst);
     sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
         .execute(pool)
@@ -37,25 +37,26 @@ async fn set_max_pages(pool: &sqlx::SqlitePool, pages: i64) {
         .unwrap();
 }
 
+/// Each new connection's set-up: the current page limit.
+fn limit_pages(
+    conn: &mut sqlx::AnyConnection,
+) -> std::pin::Pin<Box<dyn std::future::Future<Output = sqlx::Result<()>> + Send + '_>> {
+    Box::pin(async move {
+        let pages = MAX_PAGES.load(Ordering::SeqCst);
+        sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
+            .execute(&mut *conn)
+            .await?;
+        Ok(())
+    })
+}
+
 #[tokio::test]
 async fn writes_fail_cleanly_on_a_full_disk_and_recover_once_space_is_freed() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("full.db");
-    let options = fieldbal::db::options(path.to_str().unwrap()).unwrap();
     // One connection: the page limit applies to it, and a connection left
     // inside a transaction would block every later request.
-    let pool_options = sqlx::sqlite::SqlitePoolOptions::new()
-        .max_connections(1)
-        .after_connect(|conn, _| {
-            Box::pin(async move {
-                let pages = MAX_PAGES.load(Ordering::SeqCst);
-                sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
-                    .execute(&mut *conn)
-                    .await?;
-                Ok(())
-            })
-        });
-    let pool = fieldbal::db::connect_pool(pool_options, options)
+    let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
         .await
         .unwrap();
     let state = AppState::new(pool.clone());

@@ -10,7 +10,7 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::Db;
+use super::{Db, Engine};
 
 /// Set by a storage fault of any write of this process, cleared by a
 /// committed probe. One database per process, so one flag.
@@ -18,20 +18,43 @@ static FAULT: AtomicBool = AtomicBool::new(false);
 
 /// SQLite's primary result code of a database error.
 fn primary_code(e: &sqlx::Error) -> Option<i64> {
-    let code = e.as_database_error()?.code()?;
-    code.parse::<i64>().ok().map(|c| c & 0xff)
+    let db = e.as_database_error()?;
+    db.try_downcast_ref::<sqlx::sqlite::SqliteError>()?;
+    db.code()?.parse::<i64>().ok().map(|c| c & 0xff)
 }
 
-/// SQLITE_FULL: no room for another page (disk full, or `max_page_count`).
+/// PostgreSQL's SQLSTATE of a database error.
+fn sqlstate(e: &sqlx::Error) -> Option<String> {
+    let db = e.as_database_error()?;
+    Some(
+        db.try_downcast_ref::<sqlx::postgres::PgDatabaseError>()?
+            .code()
+            .to_string(),
+    )
+}
+
+/// No room for another page: SQLITE_FULL (disk full, or `max_page_count`),
+/// PostgreSQL's disk_full (53100).
 pub fn is_full(e: &sqlx::Error) -> bool {
-    primary_code(e) == Some(13)
+    primary_code(e) == Some(13) || sqlstate(e).as_deref() == Some("53100")
 }
 
-/// Whether `e` says the database cannot be written (SQLITE_READONLY, IOERR,
-/// FULL, CANTOPEN); if so, remember it until a probe succeeds.
+/// Whether `e` says the database cannot be written (SQLite: READONLY, IOERR,
+/// FULL, CANTOPEN; PostgreSQL: insufficient resources (53…), a read-only
+/// transaction (a standby, 25006), an I/O error (58030), the server shutting
+/// down or the connection lost (57P…, 08…); either: no connection at all);
+/// if so, remember it until a probe succeeds.
 pub fn storage_failed(e: &sqlx::Error) -> bool {
-    let storage =
-        matches!(primary_code(e), Some(8 | 10 | 13 | 14)) || matches!(e, sqlx::Error::Io(_));
+    let pg = sqlstate(e).is_some_and(|c| {
+        c.starts_with("53")
+            || c.starts_with("08")
+            || c.starts_with("57P")
+            || c == "25006"
+            || c == "58030"
+    });
+    let storage = pg
+        || matches!(primary_code(e), Some(8 | 10 | 13 | 14))
+        || matches!(e, sqlx::Error::Io(_) | sqlx::Error::PoolTimedOut);
     if storage {
         FAULT.store(true, Ordering::Release);
     }
@@ -44,12 +67,20 @@ pub async fn probe(db: &Db) -> Result<(), sqlx::Error> {
         storage_failed(e);
     })?;
     let wrote = async {
-        sqlx::query("INSERT INTO health_probe (id, filler) VALUES (1, zeroblob(16384))")
-            .execute(&mut *tx)
-            .await?;
-        sqlx::query("DELETE FROM health_probe")
-            .execute(&mut *tx)
-            .await
+        // Each PostgreSQL session probes its own row, so replicas' probes never wait on each other.
+        let insert = match db.engine {
+            Engine::Sqlite => "INSERT INTO health_probe (id, filler) VALUES (1, zeroblob(16384))",
+            Engine::Postgres => {
+                "INSERT INTO health_probe (id, filler)
+                 VALUES (pg_backend_pid(), decode(repeat('00', 16384), 'hex'))"
+            }
+        };
+        sqlx::query(insert).execute(&mut *tx).await?;
+        let delete = match db.engine {
+            Engine::Sqlite => "DELETE FROM health_probe",
+            Engine::Postgres => "DELETE FROM health_probe WHERE id = pg_backend_pid()",
+        };
+        sqlx::query(delete).execute(&mut *tx).await
     }
     .await;
     if let Err(e) = wrote {

@@ -8,7 +8,7 @@
 
 use serde::Serialize;
 use sha2::{Digest, Sha256};
-use sqlx::{Row, SqliteConnection};
+use sqlx::{AnyConnection, Row};
 
 use super::StoreError;
 
@@ -50,11 +50,11 @@ pub struct Replay {
 /// The answer kept for `idem`'s key, if any; `KeyReused` if the key was
 /// used for another request.
 pub(crate) async fn find(
-    conn: &mut SqliteConnection,
+    conn: &mut AnyConnection,
     idem: &Idem,
 ) -> Result<Option<Replay>, StoreError> {
     let Some(row) =
-        sqlx::query("SELECT fingerprint, status, location, body FROM idempotency WHERE key = ?")
+        sqlx::query("SELECT fingerprint, status, location, body FROM idempotency WHERE key = $1")
             .bind(&idem.key)
             .fetch_optional(&mut *conn)
             .await?
@@ -81,11 +81,9 @@ pub async fn lookup(db: &super::Db, idem: Option<&Idem>) -> Result<Option<Replay
 
 /// Inside the write transaction, before writing: stop with `Replayed` if
 /// another request with this key got there first.
-pub(crate) async fn guard(
-    conn: &mut SqliteConnection,
-    idem: Option<&Idem>,
-) -> Result<(), StoreError> {
+pub(crate) async fn guard(conn: &mut AnyConnection, idem: Option<&Idem>) -> Result<(), StoreError> {
     if let Some(idem) = idem {
+        super::engine::lock_key(conn, &idem.key).await?;
         if let Some(r) = find(conn, idem).await? {
             return Err(StoreError::Replayed(r));
         }
@@ -106,14 +104,14 @@ impl Keep<'_> {
     /// Guard and remember in one step, for writes whose answer is known beforehand.
     pub(crate) async fn guard(
         keep: Option<&Self>,
-        conn: &mut SqliteConnection,
+        conn: &mut AnyConnection,
     ) -> Result<(), StoreError> {
         guard(conn, keep.map(|k| k.idem)).await
     }
 
     pub(crate) async fn remember(
         keep: Option<&Self>,
-        conn: &mut SqliteConnection,
+        conn: &mut AnyConnection,
     ) -> Result<(), StoreError> {
         match keep {
             Some(k) => remember(conn, Some(k.idem), k.status, k.location.as_deref(), &k.body).await,
@@ -124,7 +122,7 @@ impl Keep<'_> {
 
 /// Keep the answer for `idem` inside the write transaction that stored it.
 pub(crate) async fn remember(
-    conn: &mut SqliteConnection,
+    conn: &mut AnyConnection,
     idem: Option<&Idem>,
     status: u16,
     location: Option<&str>,
@@ -134,7 +132,7 @@ pub(crate) async fn remember(
         return Ok(());
     };
     sqlx::query(
-        "INSERT INTO idempotency (key, fingerprint, status, location, body) VALUES (?, ?, ?, ?, ?)",
+        "INSERT INTO idempotency (key, fingerprint, status, location, body) VALUES ($1, $2, $3, $4, $5)",
     )
     .bind(&idem.key)
     .bind(&idem.fingerprint)

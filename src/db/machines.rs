@@ -2,13 +2,14 @@
 //! machine, its sessions (those whose `machine` is its id) with the summary of
 //! each one's latest solution, and its coefficient versions. A version is
 //! allocated inside the inserting transaction (one more than the machine's
-//! largest), and `UNIQUE (machine_seq, version)` keeps two from colliding.
+//! largest) while the machine's row is locked, and `UNIQUE (machine_seq,
+//! version)` keeps two from colliding.
 
 use serde::{Deserialize, Serialize};
 use sqlx::Row;
 use utoipa::ToSchema;
 
-use super::{sessions, Db, StoreError};
+use super::{engine, sessions, Db, StoreError};
 use crate::balancing::model::{Rotor, Session};
 
 /// A machine as posted.
@@ -95,7 +96,7 @@ fn not_found(id: &str) -> StoreError {
     StoreError::NotFound(format!("no machine has the id '{id}'"))
 }
 
-fn machine_from(r: &sqlx::sqlite::SqliteRow) -> Result<Machine, StoreError> {
+fn machine_from(r: &sqlx::any::AnyRow) -> Result<Machine, StoreError> {
     let rotor: Option<String> = r.get("rotor");
     Ok(Machine {
         id: r.get("id"),
@@ -109,28 +110,24 @@ fn machine_from(r: &sqlx::sqlite::SqliteRow) -> Result<Machine, StoreError> {
 /// Store a validated machine; `Conflict` when the id is taken.
 pub async fn create(db: &Db, m: &NewMachine) -> Result<Machine, StoreError> {
     let mut tx = db.begin_write().await?;
-    let taken = sqlx::query("SELECT 1 FROM machines WHERE id = ?")
-        .bind(&m.id)
-        .fetch_optional(&mut *tx)
-        .await?
-        .is_some();
-    if taken {
-        return Err(StoreError::Conflict {
-            field: "id",
-            message: format!("a machine with the id '{}' exists already", m.id),
-        });
-    }
     let rotor = m.rotor.as_ref().map(serde_json::to_string).transpose()?;
+    // The unique id decides, so two processes creating the same machine at
+    // once get one 201 and one 409.
     let row = sqlx::query(
-        "INSERT INTO machines (id, name, rotor, notes) VALUES (?, ?, ?, ?)
+        "INSERT INTO machines (id, name, rotor, notes) VALUES ($1, $2, $3, $4)
+         ON CONFLICT (id) DO NOTHING
          RETURNING id, name, rotor, notes, created_at",
     )
     .bind(&m.id)
     .bind(&m.name)
     .bind(rotor)
     .bind(&m.notes)
-    .fetch_one(&mut *tx)
-    .await?;
+    .fetch_optional(&mut *tx)
+    .await?
+    .ok_or_else(|| StoreError::Conflict {
+        field: "id",
+        message: format!("a machine with the id '{}' exists already", m.id),
+    })?;
     let machine = machine_from(&row)?;
     tx.commit().await?;
     Ok(machine)
@@ -139,7 +136,7 @@ pub async fn create(db: &Db, m: &NewMachine) -> Result<Machine, StoreError> {
 /// A page of machines, newest first.
 pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<MachineList, StoreError> {
     let rows = sqlx::query(
-        "SELECT id, name, rotor, notes, created_at FROM machines ORDER BY seq DESC LIMIT ? OFFSET ?",
+        "SELECT id, name, rotor, notes, created_at FROM machines ORDER BY seq DESC LIMIT $1 OFFSET $2",
     )
     .bind(limit)
     .bind(offset)
@@ -159,9 +156,9 @@ pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<MachineList, Store
 
 /// The machine, its sessions and its coefficient versions, from one snapshot.
 pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
-    let mut read = db.pool.begin().await?;
+    let mut read = db.begin_read().await?;
     let row =
-        sqlx::query("SELECT seq, id, name, rotor, notes, created_at FROM machines WHERE id = ?")
+        sqlx::query("SELECT seq, id, name, rotor, notes, created_at FROM machines WHERE id = $1")
             .bind(id)
             .fetch_optional(&mut *read)
             .await?
@@ -173,7 +170,7 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
                 (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs,
                 (SELECT solution FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solution,
                 (SELECT created_at FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solved_at
-         FROM sessions s WHERE s.machine = ? ORDER BY s.seq",
+         FROM sessions s WHERE s.machine = $1 ORDER BY s.seq",
     )
     .bind(id)
     .fetch_all(&mut *read)
@@ -197,7 +194,7 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
         });
     }
     let versions = sqlx::query(
-        "SELECT version, created_at, sessions FROM machine_coefficients WHERE machine_seq = ? ORDER BY version",
+        "SELECT version, created_at, sessions FROM machine_coefficients WHERE machine_seq = $1 ORDER BY version",
     )
     .bind(seq)
     .fetch_all(&mut *read)
@@ -223,7 +220,7 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
 /// Delete a machine and its coefficient versions (never its sessions).
 pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
     let mut tx = db.begin_write().await?;
-    let done = sqlx::query("DELETE FROM machines WHERE id = ?")
+    let done = sqlx::query("DELETE FROM machines WHERE id = $1")
         .bind(id)
         .execute(&mut *tx)
         .await?;
@@ -236,7 +233,7 @@ pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
 
 /// Whether the machine exists.
 pub async fn exists(db: &Db, id: &str) -> Result<bool, StoreError> {
-    Ok(sqlx::query("SELECT 1 FROM machines WHERE id = ?")
+    Ok(sqlx::query("SELECT 1 FROM machines WHERE id = $1")
         .bind(id)
         .fetch_optional(&db.pool)
         .await?
@@ -249,7 +246,7 @@ pub async fn load_sessions(
     db: &Db,
     ids: &[String],
 ) -> Result<Result<Vec<Session>, usize>, StoreError> {
-    let mut read = db.pool.begin().await?;
+    let mut read = db.begin_read().await?;
     let mut out = Vec::with_capacity(ids.len());
     for (i, id) in ids.iter().enumerate() {
         match sessions::load(&mut read, id).await {
@@ -270,12 +267,20 @@ pub async fn store_coefficients(
     body: serde_json::Map<String, serde_json::Value>,
 ) -> Result<StoredCoefficients, StoreError> {
     let mut tx = db.begin_write().await?;
+    // Lock the machine so that concurrent versions (other replicas) are
+    // allocated one after the other; UNIQUE (machine_seq, version) backs it.
+    let lock = engine::for_update(&tx, "SELECT seq FROM machines WHERE id = $1");
+    sqlx::query(&lock)
+        .bind(machine)
+        .fetch_optional(&mut *tx)
+        .await?
+        .ok_or_else(|| not_found(machine))?;
     let row = sqlx::query(
         "INSERT INTO machine_coefficients (machine_seq, version, sessions, body)
          SELECT m.seq,
                 COALESCE((SELECT MAX(c.version) FROM machine_coefficients c WHERE c.machine_seq = m.seq), 0) + 1,
-                ?, ?
-         FROM machines m WHERE m.id = ?
+                $1, $2
+         FROM machines m WHERE m.id = $3
          RETURNING version, created_at",
     )
     .bind(serde_json::to_string(sessions)?)
@@ -308,8 +313,8 @@ pub async fn coefficients(
     machine: &str,
     version: Option<i64>,
 ) -> Result<Result<StoredCoefficients, Missing>, StoreError> {
-    let mut read = db.pool.begin().await?;
-    let Some(m) = sqlx::query("SELECT seq FROM machines WHERE id = ?")
+    let mut read = db.begin_read().await?;
+    let Some(m) = sqlx::query("SELECT seq FROM machines WHERE id = $1")
         .bind(machine)
         .fetch_optional(&mut *read)
         .await?
@@ -319,7 +324,7 @@ pub async fn coefficients(
     let seq: i64 = m.get(0);
     let row = sqlx::query(
         "SELECT version, created_at, sessions, body FROM machine_coefficients
-         WHERE machine_seq = ? AND (? IS NULL OR version = ?) ORDER BY version DESC LIMIT 1",
+         WHERE machine_seq = $1 AND ($2 IS NULL OR version = $3) ORDER BY version DESC LIMIT 1",
     )
     .bind(seq)
     .bind(version)

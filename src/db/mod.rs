@@ -1,11 +1,18 @@
-//! Storage of sessions, runs (with every corrected version) and solutions in SQLite.
+//! Storage of sessions, runs (with every corrected version) and solutions in
+//! SQLite or PostgreSQL, through one set of queries (`sqlx::Any`, `$N`
+//! placeholders, which sqlx's SQLite driver binds by number too).
 //!
-//! One request's writes happen in one `BEGIN IMMEDIATE` transaction, so no
-//! request stores half a session. Writers of this process first queue on an
-//! async mutex: SQLite allows one writer at a time anyway, and its busy handler
-//! waits by sleeping (up to 100 ms a try), which under load gave long tails;
-//! the busy timeout remains for writers in other processes.
+//! One request's writes happen in one transaction, so no request stores half
+//! a session. On SQLite it is `BEGIN IMMEDIATE`, and writers of this process
+//! first queue on an async mutex: SQLite allows one writer at a time anyway,
+//! and its busy handler waits by sleeping (up to 100 ms a try), which under
+//! load gave long tails; the busy timeout remains for writers in other
+//! processes. On PostgreSQL several processes share the database, so nothing
+//! process-local can make writes safe: each write transaction locks the rows
+//! it builds on (`engine::lock`, `FOR UPDATE`), keys are serialised by
+//! advisory locks, and unique constraints back every allocated number.
 
+pub mod engine;
 pub mod health;
 pub mod idempotency;
 pub mod machines;
@@ -15,13 +22,10 @@ pub mod solutions;
 pub mod watch;
 
 use std::ops::{Deref, DerefMut};
-use std::str::FromStr;
 use std::sync::Arc;
-use std::time::Duration;
 
 use sqlx::pool::PoolConnection;
-use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePoolOptions, SqliteSynchronous};
-use sqlx::{Sqlite, SqliteConnection, SqlitePool};
+use sqlx::{Any, AnyConnection, AnyPool};
 use tokio::sync::{Mutex, OwnedMutexGuard};
 
 use crate::balancing::InputError;
@@ -30,86 +34,59 @@ pub use runs::RunVersion;
 pub use sessions::{SessionList, SessionSummary};
 pub use solutions::{StoredSolution, UsedRun};
 
-/// How long a connection waits for another writer before giving up.
-const BUSY_TIMEOUT: Duration = Duration::from_secs(10);
-
-/// Open (creating if missing) the database at `url` and apply the embedded migrations.
-///
-/// `url` is an SQLite URL (`sqlite://fieldbal.db`, `sqlite::memory:`) or a plain file path.
-pub async fn connect(url: &str) -> Result<SqlitePool, sqlx::Error> {
-    connect_with(options(url)?, 8).await
-}
-
-/// The connection settings of the service for the database at `url`.
-pub fn options(url: &str) -> Result<SqliteConnectOptions, sqlx::Error> {
-    let options = if url.starts_with("sqlite:") {
-        SqliteConnectOptions::from_str(url)?
-    } else {
-        SqliteConnectOptions::new().filename(url)
-    };
-    Ok(options
-        .create_if_missing(true)
-        .journal_mode(SqliteJournalMode::Wal)
-        // FULL fsyncs the WAL on every commit, so a session answered 201 survives
-        // a power cut of the stand PC, not only a crash of the process (NORMAL's
-        // guarantee). It costs about a quarter of the store rate, which stays
-        // above 1,000 sessions/s (BENCHMARKS.md).
-        .synchronous(SqliteSynchronous::Full)
-        .busy_timeout(BUSY_TIMEOUT)
-        .foreign_keys(true))
-}
-
-/// Open a pool of `connections` with `options` and apply the migrations.
-pub async fn connect_with(
-    options: SqliteConnectOptions,
-    connections: u32,
-) -> Result<SqlitePool, sqlx::Error> {
-    connect_pool(
-        SqlitePoolOptions::new().max_connections(connections),
-        options,
-    )
-    .await
-}
-
-/// Open a pool with `pool` settings (tests use it to set up each connection)
-/// and apply the migrations.
-pub async fn connect_pool(
-    pool: SqlitePoolOptions,
-    options: SqliteConnectOptions,
-) -> Result<SqlitePool, sqlx::Error> {
-    let pool = pool.connect_with(options).await?;
-    sqlx::migrate!().run(&pool).await?;
-    Ok(pool)
-}
+pub use engine::{connect, connect_pool, Engine};
 
 /// The pool and the queue of this process's writers.
 #[derive(Debug, Clone)]
 pub struct Db {
-    pub pool: SqlitePool,
+    pub pool: AnyPool,
+    pub engine: Engine,
     writer: Arc<Mutex<()>>,
 }
 
 impl Db {
-    pub fn new(pool: SqlitePool) -> Self {
+    pub fn new(pool: AnyPool) -> Self {
         Db {
+            engine: Engine::of_pool(&pool),
             pool,
             writer: Arc::new(Mutex::new(())),
         }
     }
 
-    /// Wait for this process's turn to write, then start a transaction holding
-    /// SQLite's write lock from the first statement.
+    /// Start a write transaction. On SQLite: wait for this process's turn to
+    /// write, then hold SQLite's write lock from the first statement. On
+    /// PostgreSQL: a plain (read committed) transaction, whose writes lock
+    /// what they build on.
     pub(crate) async fn begin_write(&self) -> Result<WriteTx, sqlx::Error> {
-        let turn = self.writer.clone().lock_owned().await;
+        let turn = match self.engine {
+            Engine::Sqlite => Some(self.writer.clone().lock_owned().await),
+            Engine::Postgres => None,
+        };
         let conn = self.pool.acquire().await?;
         // Held by the `WriteTx` before BEGIN is sent, so that a request cut
         // short meanwhile still rolls back (or closes) the connection.
         let mut tx = WriteTx {
             conn: Some(conn),
-            turn: Some(turn),
+            turn,
         };
-        sqlx::query("BEGIN IMMEDIATE").execute(&mut *tx).await?;
+        let begin = match self.engine {
+            Engine::Sqlite => "BEGIN IMMEDIATE",
+            Engine::Postgres => "BEGIN",
+        };
+        sqlx::query(begin).execute(&mut *tx).await?;
         Ok(tx)
+    }
+
+    /// A read-only transaction that sees one snapshot throughout (SQLite's
+    /// deferred transactions do; PostgreSQL needs repeatable read).
+    pub(crate) async fn begin_read(&self) -> Result<sqlx::Transaction<'static, Any>, sqlx::Error> {
+        let mut read = self.pool.begin().await?;
+        if self.engine == Engine::Postgres {
+            sqlx::query("SET TRANSACTION ISOLATION LEVEL REPEATABLE READ, READ ONLY")
+                .execute(&mut *read)
+                .await?;
+        }
+        Ok(read)
     }
 }
 
@@ -122,7 +99,7 @@ impl Db {
 /// inside a transaction, so every later write on it failed until restart.
 /// Here a connection whose rollback fails is closed instead of returned.
 pub(crate) struct WriteTx {
-    conn: Option<PoolConnection<Sqlite>>,
+    conn: Option<PoolConnection<Any>>,
     turn: Option<OwnedMutexGuard<()>>,
 }
 
@@ -158,7 +135,7 @@ impl WriteTx {
 
 /// Roll back a transaction that will not be committed; close the connection
 /// if even that fails, so the pool never hands out one left in a transaction.
-async fn end_failed(mut conn: PoolConnection<Sqlite>, turn: Option<OwnedMutexGuard<()>>) {
+async fn end_failed(mut conn: PoolConnection<Any>, turn: Option<OwnedMutexGuard<()>>) {
     if let Err(e) = sqlx::query("ROLLBACK").execute(&mut *conn).await {
         tracing::warn!(error = %e, "rollback failed; closing the connection");
         drop(conn.detach());
@@ -185,14 +162,14 @@ impl Drop for WriteTx {
 }
 
 impl Deref for WriteTx {
-    type Target = SqliteConnection;
-    fn deref(&self) -> &SqliteConnection {
+    type Target = AnyConnection;
+    fn deref(&self) -> &AnyConnection {
         self.conn.as_ref().expect("an open transaction")
     }
 }
 
 impl DerefMut for WriteTx {
-    fn deref_mut(&mut self) -> &mut SqliteConnection {
+    fn deref_mut(&mut self) -> &mut AnyConnection {
         self.conn.as_mut().expect("an open transaction")
     }
 }

@@ -2,7 +2,7 @@
 //! its earlier versions, and list those versions.
 
 use serde::Serialize;
-use sqlx::{Row, SqliteConnection};
+use sqlx::{AnyConnection, Row};
 use utoipa::ToSchema;
 
 use super::idempotency::Keep;
@@ -40,19 +40,19 @@ async fn check_off_async(
 
 /// Insert a run that does not exist yet, as version 1.
 pub(crate) async fn insert_new(
-    conn: &mut SqliteConnection,
+    conn: &mut AnyConnection,
     seq: i64,
     position: i64,
     run: &Run,
 ) -> Result<(), StoreError> {
-    sqlx::query("INSERT INTO runs (session_seq, run_id, position, version) VALUES (?, ?, ?, 1)")
+    sqlx::query("INSERT INTO runs (session_seq, run_id, position, version) VALUES ($1, $2, $3, 1)")
         .bind(seq)
         .bind(&run.id)
         .bind(position)
         .execute(&mut *conn)
         .await?;
     sqlx::query(
-        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES (?, ?, 1, ?)",
+        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES ($1, $2, 1, $3)",
     )
     .bind(seq)
     .bind(&run.id)
@@ -63,11 +63,11 @@ pub(crate) async fn insert_new(
 }
 
 /// The current version of every run of a session, in the order they were entered.
-pub(crate) async fn current(conn: &mut SqliteConnection, seq: i64) -> Result<Vec<Run>, StoreError> {
+pub(crate) async fn current(conn: &mut AnyConnection, seq: i64) -> Result<Vec<Run>, StoreError> {
     let rows = sqlx::query(
         "SELECT v.body FROM runs r
          JOIN run_versions v ON v.session_seq = r.session_seq AND v.run_id = r.run_id AND v.version = r.version
-         WHERE r.session_seq = ? ORDER BY r.position",
+         WHERE r.session_seq = $1 ORDER BY r.position",
     )
     .bind(seq)
     .fetch_all(&mut *conn)
@@ -89,7 +89,7 @@ pub async fn append(
 ) -> Result<usize, StoreError> {
     let mut tx = db.begin_write().await?;
     Keep::guard(keep, &mut tx).await?;
-    let (seq, mut session) = sessions::load(&mut tx, id).await?;
+    let (seq, mut session) = sessions::load_for_update(&mut tx, id).await?;
     if session.runs.iter().any(|r| r.id == run.id) {
         return Err(StoreError::Conflict {
             field: "id",
@@ -103,7 +103,7 @@ pub async fn append(
     session.runs.push(run.clone());
     check_off_async(session, index, check).await?;
     let position: i64 =
-        sqlx::query("SELECT COALESCE(MAX(position), -1) + 1 FROM runs WHERE session_seq = ?")
+        sqlx::query("SELECT COALESCE(MAX(position), -1) + 1 FROM runs WHERE session_seq = $1")
             .bind(seq)
             .fetch_one(&mut *tx)
             .await?
@@ -124,7 +124,7 @@ pub async fn replace(
     if_match: Option<&[i64]>,
 ) -> Result<i64, StoreError> {
     let mut tx = db.begin_write().await?;
-    let (seq, mut session) = sessions::load(&mut tx, id).await?;
+    let (seq, mut session) = sessions::load_for_update(&mut tx, id).await?;
     if let Some(wanted) = if_match {
         let current = current_version(&mut tx, seq, &run.id).await?;
         if current.is_some_and(|v| !wanted.contains(&v)) {
@@ -148,8 +148,8 @@ pub async fn replace(
     session.runs[index] = run.clone();
     check_off_async(session, index, check).await?;
     let version: i64 = sqlx::query(
-        "UPDATE runs SET version = (SELECT MAX(version) + 1 FROM run_versions WHERE session_seq = ?1 AND run_id = ?2)
-         WHERE session_seq = ?1 AND run_id = ?2 RETURNING version",
+        "UPDATE runs SET version = (SELECT MAX(version) + 1 FROM run_versions WHERE session_seq = $1 AND run_id = $2)
+         WHERE session_seq = $1 AND run_id = $2 RETURNING version",
     )
     .bind(seq)
     .bind(&run.id)
@@ -157,7 +157,7 @@ pub async fn replace(
     .await?
     .get(0);
     sqlx::query(
-        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES (?, ?, ?, ?)",
+        "INSERT INTO run_versions (session_seq, run_id, version, body) VALUES ($1, $2, $3, $4)",
     )
     .bind(seq)
     .bind(&run.id)
@@ -179,9 +179,9 @@ pub async fn versions(
 ) -> Result<(Vec<RunVersion>, i64), StoreError> {
     let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
-        "SELECT v.version, v.created_at, v.body, v.version = r.version AS current
+        "SELECT v.version, v.created_at, v.body, r.version AS current
          FROM run_versions v JOIN runs r ON r.session_seq = v.session_seq AND r.run_id = v.run_id
-         WHERE v.session_seq = ? AND v.run_id = ? ORDER BY v.version LIMIT ? OFFSET ?",
+         WHERE v.session_seq = $1 AND v.run_id = $2 ORDER BY v.version LIMIT $3 OFFSET $4",
     )
     .bind(seq)
     .bind(run_id)
@@ -190,7 +190,7 @@ pub async fn versions(
     .fetch_all(&db.pool)
     .await?;
     let total: i64 =
-        sqlx::query("SELECT COUNT(*) FROM run_versions WHERE session_seq = ? AND run_id = ?")
+        sqlx::query("SELECT COUNT(*) FROM run_versions WHERE session_seq = $1 AND run_id = $2")
             .bind(seq)
             .bind(run_id)
             .fetch_one(&db.pool)
@@ -207,7 +207,8 @@ pub async fn versions(
             Ok(RunVersion {
                 version: r.get("version"),
                 created_at: r.get("created_at"),
-                current: r.get("current"),
+                // Compared here: `sqlx::Any` reads SQLite's 0/1 as a number, not a bool.
+                current: r.get::<i64, _>("current") == r.get::<i64, _>("version"),
                 run: serde_json::from_str(r.get("body"))?,
             })
         })
@@ -217,12 +218,12 @@ pub async fn versions(
 
 /// The current version number of a run, if the session has it.
 async fn current_version(
-    conn: &mut SqliteConnection,
+    conn: &mut AnyConnection,
     seq: i64,
     run_id: &str,
 ) -> Result<Option<i64>, StoreError> {
     Ok(
-        sqlx::query("SELECT version FROM runs WHERE session_seq = ? AND run_id = ?")
+        sqlx::query("SELECT version FROM runs WHERE session_seq = $1 AND run_id = $2")
             .bind(seq)
             .bind(run_id)
             .fetch_optional(&mut *conn)
@@ -238,7 +239,7 @@ pub async fn get(db: &Db, id: &str, run_id: &str) -> Result<(Run, i64), StoreErr
     let row = sqlx::query(
         "SELECT v.body, r.version FROM runs r
          JOIN run_versions v ON v.session_seq = r.session_seq AND v.run_id = r.run_id AND v.version = r.version
-         WHERE r.session_seq = ? AND r.run_id = ?",
+         WHERE r.session_seq = $1 AND r.run_id = $2",
     )
     .bind(seq)
     .bind(run_id)

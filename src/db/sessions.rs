@@ -1,11 +1,11 @@
 //! The `sessions` table: create, list, read back and delete whole sessions.
 
 use serde::Serialize;
-use sqlx::{Row, Sqlite};
+use sqlx::Row;
 use utoipa::ToSchema;
 
 use super::idempotency::Keep;
-use super::{runs, Db, StoreError};
+use super::{engine, runs, Db, StoreError};
 use crate::balancing::model::Session;
 
 /// One line of the session list.
@@ -46,7 +46,7 @@ pub async fn create(
     let mut tx = db.begin_write().await?;
     Keep::guard(keep, &mut tx).await?;
     let seq: i64 = sqlx::query(
-        "INSERT INTO sessions (id, name, machine, setup) VALUES (?, ?, ?, ?) RETURNING seq",
+        "INSERT INTO sessions (id, name, machine, setup) VALUES ($1, $2, $3, $4) RETURNING seq",
     )
     .bind(id)
     .bind(&session.name)
@@ -68,7 +68,7 @@ pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<SessionList, Store
     let rows = sqlx::query(
         "SELECT s.id, s.name, s.machine, s.created_at,
                 (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs
-         FROM sessions s ORDER BY s.seq DESC LIMIT ? OFFSET ?",
+         FROM sessions s ORDER BY s.seq DESC LIMIT $1 OFFSET $2",
     )
     .bind(limit)
     .bind(offset)
@@ -99,9 +99,9 @@ pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<SessionList, Store
 /// The session's internal key, or `NotFound`.
 pub(crate) async fn seq_of<'e, E>(exec: E, id: &str) -> Result<i64, StoreError>
 where
-    E: sqlx::Executor<'e, Database = Sqlite>,
+    E: sqlx::Executor<'e, Database = sqlx::Any>,
 {
-    sqlx::query("SELECT seq FROM sessions WHERE id = ?")
+    sqlx::query("SELECT seq FROM sessions WHERE id = $1")
         .bind(id)
         .fetch_optional(exec)
         .await?
@@ -115,12 +115,34 @@ pub async fn get(db: &Db, id: &str) -> Result<Session, StoreError> {
     Ok(load(&mut conn, id).await?.1)
 }
 
+/// The statement reading a session's set-up.
+const SETUP: &str = "SELECT seq, setup FROM sessions WHERE id = $1";
+
 /// Load a session inside a connection or transaction; returns its key too.
 pub(crate) async fn load(
-    conn: &mut sqlx::SqliteConnection,
+    conn: &mut sqlx::AnyConnection,
     id: &str,
 ) -> Result<(i64, Session), StoreError> {
-    let row = sqlx::query("SELECT seq, setup FROM sessions WHERE id = ?")
+    load_with(conn, id, SETUP.into()).await
+}
+
+/// [`load`] inside a write transaction that changes the session: its row
+/// stays locked until the transaction ends, so writers of the same session in
+/// other processes (PostgreSQL replicas) take turns.
+pub(crate) async fn load_for_update(
+    conn: &mut sqlx::AnyConnection,
+    id: &str,
+) -> Result<(i64, Session), StoreError> {
+    let sql = engine::for_update(conn, SETUP);
+    load_with(conn, id, sql).await
+}
+
+async fn load_with(
+    conn: &mut sqlx::AnyConnection,
+    id: &str,
+    sql: std::borrow::Cow<'static, str>,
+) -> Result<(i64, Session), StoreError> {
+    let row = sqlx::query(&sql)
         .bind(id)
         .fetch_optional(&mut *conn)
         .await?
@@ -134,7 +156,7 @@ pub(crate) async fn load(
 /// Delete a session with its runs and solutions.
 pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
     let mut tx = db.begin_write().await?;
-    let done = sqlx::query("DELETE FROM sessions WHERE id = ?")
+    let done = sqlx::query("DELETE FROM sessions WHERE id = $1")
         .bind(id)
         .execute(&mut *tx)
         .await?;

@@ -41,10 +41,10 @@ pub struct Solved {
 /// Read the session and its run versions from one snapshot, so the solution
 /// records exactly which versions it used.
 pub async fn load_for_solve(db: &Db, id: &str) -> Result<(Session, Solved), StoreError> {
-    let mut read = db.pool.begin().await?;
+    let mut read = db.begin_read().await?;
     let (seq, session) = sessions::load(&mut read, id).await?;
     let runs: Vec<UsedRun> =
-        sqlx::query("SELECT run_id, version FROM runs WHERE session_seq = ? ORDER BY position")
+        sqlx::query("SELECT run_id, version FROM runs WHERE session_seq = $1 ORDER BY position")
             .bind(seq)
             .fetch_all(&mut *read)
             .await?
@@ -71,10 +71,19 @@ pub async fn store(
     let fieldbal_version = env!("CARGO_PKG_VERSION").to_string();
     let mut tx = db.begin_write().await?;
     idempotency::guard(&mut tx, idem).await?;
+    if super::Engine::of_conn(&tx) == super::Engine::Postgres {
+        // Keep another replica from deleting the session between this insert
+        // and its foreign-key check (SQLite's writers take turns already).
+        let lock = super::engine::for_update(&tx, "SELECT seq FROM sessions WHERE seq = $1");
+        sqlx::query(&lock)
+            .bind(solved.seq)
+            .fetch_optional(&mut *tx)
+            .await?;
+    }
     // The session may have been deleted meanwhile: then nothing is inserted.
     let row = sqlx::query(
         "INSERT INTO solutions (session_seq, options, run_versions, solution, fieldbal_version)
-         SELECT seq, ?, ?, ?, ? FROM sessions WHERE seq = ?
+         SELECT seq, $1, $2, $3, $4 FROM sessions WHERE seq = $5
          RETURNING seq, created_at",
     )
     .bind(serde_json::to_string(options)?)
@@ -108,14 +117,14 @@ pub async fn list(
     let seq = sessions::seq_of(&db.pool, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
-         FROM solutions WHERE session_seq = ? ORDER BY seq LIMIT ? OFFSET ?",
+         FROM solutions WHERE session_seq = $1 ORDER BY seq LIMIT $2 OFFSET $3",
     )
     .bind(seq)
     .bind(limit)
     .bind(offset)
     .fetch_all(&db.pool)
     .await?;
-    let total: i64 = sqlx::query("SELECT COUNT(*) FROM solutions WHERE session_seq = ?")
+    let total: i64 = sqlx::query("SELECT COUNT(*) FROM solutions WHERE session_seq = $1")
         .bind(seq)
         .fetch_one(&db.pool)
         .await?

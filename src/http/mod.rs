@@ -29,7 +29,7 @@ use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{Request, StatusCode};
 use axum::routing::{get, post, put};
 use axum::{Json, Router};
-use sqlx::SqlitePool;
+use sqlx::AnyPool;
 use tower_http::catch_panic::CatchPanicLayer;
 use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetRequestIdLayer};
 use tower_http::trace::{DefaultOnResponse, TraceLayer};
@@ -49,7 +49,8 @@ pub struct ServeArgs {
     /// Address to listen on.
     #[arg(long, env = "FIELDBAL_LISTEN", default_value = "127.0.0.1:8080")]
     pub listen: String,
-    /// SQLite database URL (`sqlite://fieldbal.db`) or file path.
+    /// Database: `postgres://user:password@host/db` (PostgreSQL, for several
+    /// replicas), or an SQLite URL (`sqlite://fieldbal.db`) or file path.
     #[arg(long, env = "DATABASE_URL", default_value = "sqlite://fieldbal.db")]
     pub database: String,
     /// Largest accepted request body, bytes.
@@ -101,7 +102,7 @@ pub struct Config {
 /// Shared state of the handlers.
 #[derive(Debug, Clone)]
 pub struct AppState {
-    pub pool: SqlitePool,
+    pub pool: AnyPool,
     pub config: Arc<Config>,
     /// The pool with this process's queue of writers (see `db`).
     pub(crate) db: crate::db::Db,
@@ -113,7 +114,7 @@ pub struct AppState {
 
 impl AppState {
     /// State with the default settings.
-    pub fn new(pool: SqlitePool) -> Self {
+    pub fn new(pool: AnyPool) -> Self {
         AppState {
             db: crate::db::Db::new(pool.clone()),
             solves: work::Slots::new(
@@ -154,8 +155,9 @@ impl AppState {
     }
 }
 
-/// Open (creating and migrating) the SQLite database at `url` (URL or file path).
-pub async fn connect_db(url: &str) -> Result<SqlitePool, sqlx::Error> {
+/// Open (creating and migrating) the database at `url`: `postgres://…`, or
+/// SQLite's (URL or file path).
+pub async fn connect_db(url: &str) -> Result<AnyPool, sqlx::Error> {
     crate::db::connect(url).await
 }
 
@@ -364,6 +366,7 @@ pub fn serve_main(args: ServeArgs) -> ExitCode {
 
 /// The start-up error for a database that cannot be opened or written.
 fn cannot_write(database: &str, e: &sqlx::Error) -> String {
+    let database = crate::db::engine::redacted(database);
     let text = e.to_string();
     if text.contains("readonly") || text.contains("read-only") {
         format!("database {database} is read-only ({text}): fieldbal needs to write the file and its directory (for the -wal and -shm files); fix the permissions or the mount, or point --database elsewhere")
@@ -394,7 +397,7 @@ async fn run(args: ServeArgs) -> Result<(), String> {
         .await
         .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
-    tracing::info!(%addr, database = %args.database, "fieldbal serve listening");
+    tracing::info!(%addr, database = %crate::db::engine::redacted(&args.database), "fieldbal serve listening");
     let l = &args.limits;
     Limits::configure(Limits {
         planes: l.max_planes,

@@ -1,6 +1,15 @@
 //! Shared support for integration tests: start the real server on 127.0.0.1:0
-//! with an SQLite file, and read the public examples.
+//! on either engine, and read the public examples.
+//!
+//! A test names an SQLite file; with `FIELDBAL_TEST_ENGINE=postgres`
+//! (`scripts/test.sh` runs the HTTP suites a second time so) the server gets
+//! a PostgreSQL database of its own on the throw-away cluster at
+//! `FIELDBAL_TEST_POSTGRES_URL` instead, named after that file so that a
+//! restart on the same file finds the same data.
 #![allow(dead_code)] // each test binary uses a different part of this module
+
+pub mod binary;
+pub mod engine;
 
 use std::net::SocketAddr;
 use std::path::Path;
@@ -56,9 +65,8 @@ pub async fn start_server_configured(
     db_path: &Path,
     configure: impl FnOnce(AppState) -> AppState,
 ) -> (SocketAddr, Server) {
-    let pool = http::connect_db(db_path.to_str().expect("utf-8 path"))
-        .await
-        .expect("database opens");
+    let url = engine::database_url(db_path).await;
+    let pool = http::connect_db(&url).await.expect("database opens");
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
         .await
         .expect("bind 127.0.0.1:0");

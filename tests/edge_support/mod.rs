@@ -100,46 +100,14 @@ fn parse(buf: &[u8]) -> Option<Answer> {
 
 /// Start `fieldbal serve` on 127.0.0.1:0 in `dir` with `args`; returns it and its address.
 pub fn start_binary(dir: &std::path::Path, args: &[&str]) -> (std::process::Child, SocketAddr) {
-    use std::io::{BufRead, BufReader};
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args(["serve", "--listen", "127.0.0.1:0"])
-        .args(args)
-        .env_remove("DATABASE_URL")
-        .env_remove("FIELDBAL_TOKENS")
-        .env("NO_COLOR", "1")
-        .current_dir(dir)
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("fieldbal starts");
-    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
-    let addr = loop {
-        let line = lines
-            .next()
-            .expect("the server logs its address before exiting")
-            .unwrap();
-        if let Some(rest) = line.split("addr=").nth(1) {
-            break rest.split_whitespace().next().unwrap().parse().unwrap();
-        }
-    };
-    std::thread::spawn(move || lines.for_each(drop));
-    (child, addr)
+    let mut all = vec!["--listen", "127.0.0.1:0"];
+    all.extend_from_slice(args);
+    let (child, addr) = crate::common::binary::start(Some(dir), &all, &[]);
+    (child, addr.parse().unwrap())
 }
 
 /// SIGTERM, then wait (bounded: 30 s) for the exit status.
-pub fn terminate(mut child: std::process::Child) -> std::process::ExitStatus {
-    let sent = std::process::Command::new("kill")
-        .args(["-TERM", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(sent.success());
-    for _ in 0..300 {
-        if let Some(status) = child.try_wait().unwrap() {
-            return status;
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    child.kill().unwrap();
-    panic!("fieldbal did not stop within 30 s of SIGTERM");
+pub fn terminate(child: std::process::Child) -> std::process::ExitStatus {
+    crate::common::binary::terminate(child, 30)
 }
 pub mod schema;

@@ -2,9 +2,8 @@
 //! read its peak memory, and build sessions of a given size.
 #![allow(dead_code)] // each test binary uses a different part of this module
 
-use std::io::{BufRead, BufReader};
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::Child;
 use std::time::Duration;
 
 use serde_json::{json, Value};
@@ -18,27 +17,11 @@ pub struct Binary {
 impl Binary {
     /// Start `fieldbal serve --listen 127.0.0.1:0 --database DB ARGS…` and wait for its address.
     pub fn start(db: &Path, args: &[&str]) -> Binary {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-            .args(["serve", "--listen", "127.0.0.1:0", "--database"])
-            .arg(db)
-            .args(args)
-            .env_remove("DATABASE_URL")
-            .env("NO_COLOR", "1")
-            .stdout(Stdio::null())
-            .stderr(Stdio::piped())
-            .spawn()
-            .expect("fieldbal starts");
-        let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
-        let addr = loop {
-            let line = lines
-                .next()
-                .expect("the server logs its address before exiting")
-                .unwrap();
-            if let Some(rest) = line.split("addr=").nth(1) {
-                break rest.split_whitespace().next().unwrap().to_string();
-            }
-        };
-        std::thread::spawn(move || lines.for_each(drop));
+        let mut all = vec!["--listen", "127.0.0.1:0", "--database"];
+        let db = db.to_str().expect("utf-8 path");
+        all.push(db);
+        all.extend_from_slice(args);
+        let (child, addr) = crate::common::binary::start(None, &all, &[]);
         Binary { child, addr }
     }
 

@@ -1,0 +1,186 @@
+//! Which engine a database URL names (SQLite or PostgreSQL), opening a pool on
+//! it with the service's settings and embedded migrations, and the few
+//! statements whose SQL differs between the engines (row and key locks).
+
+use std::future::Future;
+use std::path::Path;
+use std::pin::Pin;
+use std::time::Duration;
+
+use sqlx::any::AnyPoolOptions;
+use sqlx::{AnyConnection, AnyPool, Database};
+
+/// The database engine behind a pool or connection.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Engine {
+    Sqlite,
+    Postgres,
+}
+
+impl Engine {
+    /// `postgres://…` or `postgresql://…` is PostgreSQL; anything else
+    /// (`sqlite://…`, `sqlite::memory:`, a file path) is SQLite.
+    pub fn of_url(url: &str) -> Engine {
+        if url.starts_with("postgres://") || url.starts_with("postgresql://") {
+            Engine::Postgres
+        } else {
+            Engine::Sqlite
+        }
+    }
+
+    pub fn of_pool(pool: &AnyPool) -> Engine {
+        Engine::of_url(pool.connect_options().database_url.as_str())
+    }
+
+    pub fn of_conn(conn: &AnyConnection) -> Engine {
+        if conn.backend_name() == sqlx::Postgres::NAME {
+            Engine::Postgres
+        } else {
+            Engine::Sqlite
+        }
+    }
+}
+
+/// `url` for logs and messages: a PostgreSQL URL without its password.
+pub fn redacted(url: &str) -> String {
+    match url::Url::parse(url) {
+        Ok(mut u) if Engine::of_url(url) == Engine::Postgres && u.password().is_some() => {
+            let _ = u.set_password(Some("***"));
+            u.to_string()
+        }
+        _ => url.to_string(),
+    }
+}
+
+/// How long an SQLite connection waits for another process's writer.
+const BUSY_TIMEOUT_MS: u64 = 10_000;
+/// Connections per process. SQLite has one writer anyway; a PostgreSQL
+/// replica's writers wait on row locks, not on the pool, so it gets more.
+const SQLITE_CONNECTIONS: u32 = 8;
+const POSTGRES_CONNECTIONS: u32 = 16;
+
+/// Extra set-up of each new connection (tests use it to limit SQLite's pages).
+pub type Setup = for<'c> fn(
+    &'c mut AnyConnection,
+) -> Pin<Box<dyn Future<Output = sqlx::Result<()>> + Send + 'c>>;
+
+/// Open (creating if missing) the database at `url` and apply the embedded
+/// migrations of its engine.
+///
+/// `url` is `postgres://…`, an SQLite URL (`sqlite://fieldbal.db`,
+/// `sqlite::memory:`) or a plain file path (SQLite).
+pub async fn connect(url: &str) -> Result<AnyPool, sqlx::Error> {
+    connect_pool(url, None, None).await
+}
+
+/// [`connect`] with `connections` instead of the default pool size and
+/// `setup` run on each new connection after the service's own settings.
+pub async fn connect_pool(
+    url: &str,
+    connections: Option<u32>,
+    setup: Option<Setup>,
+) -> Result<AnyPool, sqlx::Error> {
+    sqlx::any::install_default_drivers();
+    match Engine::of_url(url) {
+        Engine::Sqlite => {
+            let pool = AnyPoolOptions::new()
+                .max_connections(connections.unwrap_or(SQLITE_CONNECTIONS))
+                .after_connect(move |conn, _| {
+                    Box::pin(async move {
+                        sqlite_settings(conn).await?;
+                        match setup {
+                            Some(setup) => setup(conn).await,
+                            None => Ok(()),
+                        }
+                    })
+                })
+                .connect(&sqlite_url(url)?)
+                .await?;
+            sqlx::migrate!().run(&pool).await?;
+            Ok(pool)
+        }
+        Engine::Postgres => {
+            let pool = AnyPoolOptions::new()
+                .max_connections(connections.unwrap_or(POSTGRES_CONNECTIONS))
+                // A database that is down answers 503 within this, not after sqlx's 30 s.
+                .acquire_timeout(Duration::from_secs(10))
+                .after_connect(move |conn, _| {
+                    Box::pin(async move {
+                        match setup {
+                            Some(setup) => setup(conn).await,
+                            None => Ok(()),
+                        }
+                    })
+                })
+                .connect(url)
+                .await?;
+            // sqlx takes an advisory lock around PostgreSQL migrations, so
+            // replicas starting together apply each one once.
+            sqlx::migrate!("migrations/postgres").run(&pool).await?;
+            Ok(pool)
+        }
+    }
+}
+
+/// The SQLite URL for `url`: a plain path becomes an absolute, percent-encoded
+/// `sqlite://` URL; either is opened read-write-create unless it says a mode.
+fn sqlite_url(url: &str) -> Result<String, sqlx::Error> {
+    let mut out = if url.starts_with("sqlite:") {
+        url.to_string()
+    } else {
+        let path = std::path::absolute(Path::new(url)).map_err(sqlx::Error::Io)?;
+        let file = url::Url::from_file_path(&path)
+            .map_err(|()| sqlx::Error::Configuration(format!("bad path {url}").into()))?;
+        format!("sqlite://{}", file.path())
+    };
+    if !out.contains("mode=") && !out.contains(":memory:") {
+        out.push(if out.contains('?') { '&' } else { '?' });
+        out.push_str("mode=rwc");
+    }
+    Ok(out)
+}
+
+/// The service's SQLite settings, per connection.
+async fn sqlite_settings(conn: &mut AnyConnection) -> sqlx::Result<()> {
+    for pragma in [
+        format!("PRAGMA busy_timeout = {BUSY_TIMEOUT_MS}"),
+        "PRAGMA journal_mode = WAL".to_string(),
+        // FULL fsyncs the WAL on every commit, so a session answered 201 survives
+        // a power cut of the stand PC, not only a crash of the process (NORMAL's
+        // guarantee). It costs about a quarter of the store rate, which stays
+        // above 1,000 sessions/s (BENCHMARKS.md).
+        "PRAGMA synchronous = FULL".to_string(),
+        "PRAGMA foreign_keys = ON".to_string(),
+    ] {
+        sqlx::query(&pragma).execute(&mut *conn).await?;
+    }
+    Ok(())
+}
+
+/// `sql` (a `SELECT` of one table's rows) locking the rows it reads until the
+/// transaction ends, on PostgreSQL; on SQLite the write transaction already
+/// holds the database's only write lock.
+pub(crate) fn for_update(
+    conn: &AnyConnection,
+    sql: &'static str,
+) -> std::borrow::Cow<'static, str> {
+    match Engine::of_conn(conn) {
+        Engine::Sqlite => sql.into(),
+        Engine::Postgres => format!("{sql} FOR UPDATE").into(),
+    }
+}
+
+/// Serialise the transactions using `key` (an `Idempotency-Key`) until this
+/// one ends, on PostgreSQL: the second then finds what the first stored.
+/// On SQLite writers are serialised already.
+pub(crate) async fn lock_key(conn: &mut AnyConnection, key: &str) -> sqlx::Result<()> {
+    if Engine::of_conn(conn) == Engine::Postgres {
+        sqlx::query(
+            "SELECT COUNT(*) FROM (SELECT pg_advisory_xact_lock(hashtextextended($1, 0))) l",
+        )
+        .bind(key)
+        .execute(&mut *conn)
+        .await?;
+    }
+    Ok(())
+}

@@ -184,18 +184,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         let text = format!(
             "the trial weight in plane {id} changed the vibration by at most {snr:.1} times the measurement noise of that change (from the readings' repeatability: amplitude_noise_pct, phase_noise_deg, or the samples' scatter); below {SNR_THRESHOLD} times it cannot be told from noise at any sensor and speed, so the influence coefficients and the correction for this plane are unreliable: repeat the trial run with a heavier trial weight{more}, or at a larger radius"
         );
-        let existing = solution
-            .warnings
-            .iter_mut()
-            .find(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(id.as_str()));
-        match existing {
-            Some(w) => w.message = format!("{}. Also, {text}", w.message.trim_end_matches('.')),
-            None => solution.warnings.push(Warning {
-                code: "trial_effect_small".into(),
-                message: text,
-                plane: Some(id),
-            }),
-        }
+        super::trust::trial_warning(&mut solution.warnings, id, text);
     }
 
     // Coefficients' noise beside their signal: the trial too small to trust (issue 12).

@@ -93,17 +93,23 @@ pub fn warn_untrusted(fit: &Fit, kappas: &[Option<f64>], solution: &mut Solution
             1.0 / KAPPA_LIMIT.sqrt(),
             (k / KAPPA_LIMIT).sqrt()
         );
-        let existing = solution
-            .warnings
-            .iter_mut()
-            .find(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(id.as_str()));
-        match existing {
-            Some(w) => w.message = format!("{}. Also, {text}", w.message.trim_end_matches('.')),
-            None => solution.warnings.push(Warning {
-                code: "trial_effect_small".into(),
-                message: text,
-                plane: Some(id),
-            }),
-        }
+        trial_warning(&mut solution.warnings, id, text);
+    }
+}
+
+/// Give plane `id` a `trial_effect_small` warning saying `text`, appended to
+/// the one it already has: the effect-to-noise test and the `κ` test each
+/// say what to do, in their own terms.
+pub fn trial_warning(warnings: &mut Vec<Warning>, id: String, text: String) {
+    let existing = warnings
+        .iter_mut()
+        .find(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(id.as_str()));
+    match existing {
+        Some(w) => w.message = format!("{}. Also, {text}", w.message.trim_end_matches('.')),
+        None => warnings.push(Warning {
+            code: "trial_effect_small".into(),
+            message: text,
+            plane: Some(id),
+        }),
     }
 }

@@ -142,25 +142,14 @@ pub fn session(
 ) -> Session {
     let rows = y[0].len();
     let reading = |k: usize, a: usize| {
-        let (amplitude, phase_deg) = reading_out(conv, y[k][a]);
-        Reading {
-            speed_rpm: if a < 2 { 1500.0 } else { 3000.0 },
-            sensor: format!("S{}", a % 2),
-            amplitude,
-            phase_deg,
-            samples: samples.map(|s| {
-                s[k][a]
-                    .iter()
-                    .map(|&z| {
-                        let (amplitude, phase_deg) = reading_out(conv, z);
-                        Sample {
-                            amplitude,
-                            phase_deg,
-                        }
-                    })
-                    .collect()
-            }),
-        }
+        let speed_rpm = if a < 2 { 1500.0 } else { 3000.0 };
+        reading_of(
+            conv,
+            speed_rpm,
+            a % 2,
+            y[k][a],
+            samples.map(|s| &s[k][a][..]),
+        )
     };
     let run = |k: usize| Run {
         id: format!("run {k}"),
@@ -203,6 +192,35 @@ pub fn session(
 
 /// A reading with independent radial noise (`pct` % of its amplitude) and
 /// tangential noise (`deg` degrees), the options' noise model.
+/// The reading of sensor `S{sensor}` at `speed_rpm`: phasor `y` (internal
+/// frame) and, if given, its samples, in the conventions `conv`.
+pub fn reading_of(
+    conv: Conventions,
+    speed_rpm: f64,
+    sensor: usize,
+    y: Complex64,
+    samples: Option<&[Complex64]>,
+) -> Reading {
+    let (amplitude, phase_deg) = reading_out(conv, y);
+    Reading {
+        speed_rpm,
+        sensor: format!("S{sensor}"),
+        amplitude,
+        phase_deg,
+        samples: samples.map(|zs| {
+            zs.iter()
+                .map(|&z| {
+                    let (amplitude, phase_deg) = reading_out(conv, z);
+                    Sample {
+                        amplitude,
+                        phase_deg,
+                    }
+                })
+                .collect()
+        }),
+    }
+}
+
 pub fn noisy(y: Complex64, pct: f64, deg: f64, rng: &mut StdRng) -> Complex64 {
     let n = Normal::new(0.0, 1.0).unwrap();
     y * c(

@@ -8,10 +8,7 @@
 //! every mass, corrections only in three planes: the exact least-squares
 //! correction leaves a residual over several speeds and sensors.
 
-use fieldbal::balancing::model::{
-    Conventions, Plane, Reading, Run, Sample, Sensor, Session, Unit, Weight,
-};
-use fieldbal::balancing::phasor::reading_out;
+use fieldbal::balancing::model::{Conventions, Plane, Run, Sensor, Session, Unit, Weight};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
@@ -122,25 +119,13 @@ pub fn session(
 ) -> Session {
     let n = SENSORS.len();
     let reading = |k: usize, a: usize| {
-        let (amplitude, phase_deg) = reading_out(conv, y[k][a]);
-        Reading {
-            speed_rpm: speeds_rpm[a / n],
-            sensor: format!("S{}", a % n),
-            amplitude,
-            phase_deg,
-            samples: samples.map(|s| {
-                s[k][a]
-                    .iter()
-                    .map(|&z| {
-                        let (amplitude, phase_deg) = reading_out(conv, z);
-                        Sample {
-                            amplitude,
-                            phase_deg,
-                        }
-                    })
-                    .collect()
-            }),
-        }
+        super::reading_of(
+            conv,
+            speeds_rpm[a / n],
+            a % n,
+            y[k][a],
+            samples.map(|s| &s[k][a][..]),
+        )
     };
     let run = |k: usize| Run {
         id: format!("run {k}"),

@@ -140,32 +140,54 @@ pub fn session(
     y: &[Vec<Complex64>],
     samples: Option<&[Vec<Vec<Complex64>>]>,
 ) -> Session {
-    let rows = y[0].len();
+    let speed_rpm = |a: usize| if a < 2 { 1500.0 } else { 3000.0 };
+    session_of(
+        "generated",
+        2.min(y[0].len()),
+        speed_rpm,
+        conv,
+        trial,
+        y,
+        samples,
+    )
+}
+
+/// A session named `name` of readings `y` (runs × rows): row `a` is sensor
+/// `S{a % sensors}` at `speed_rpm(a)`; run 0 is the reference, run `k` has
+/// trial `trial[k − 1]` at 0° in plane `P{k − 1}`; `samples[k][a]` optionally
+/// lists repeated readings.
+pub fn session_of(
+    name: &str,
+    sensors: usize,
+    speed_rpm: impl Fn(usize) -> f64,
+    conv: Conventions,
+    trial: &[f64],
+    y: &[Vec<Complex64>],
+    samples: Option<&[Vec<Vec<Complex64>>]>,
+) -> Session {
     let reading = |k: usize, a: usize| {
-        let speed_rpm = if a < 2 { 1500.0 } else { 3000.0 };
         reading_of(
             conv,
-            speed_rpm,
-            a % 2,
+            speed_rpm(a),
+            a % sensors,
             y[k][a],
             samples.map(|s| &s[k][a][..]),
         )
     };
     let run = |k: usize| Run {
         id: format!("run {k}"),
-        weights: if k == 0 {
-            vec![]
-        } else {
-            vec![Weight {
+        weights: match k {
+            0 => vec![],
+            _ => vec![Weight {
                 plane: format!("P{}", k - 1),
                 mass_g: trial[k - 1],
                 angle_deg: 0.0,
-            }]
+            }],
         },
-        readings: (0..rows).map(|a| reading(k, a)).collect(),
+        readings: (0..y[0].len()).map(|a| reading(k, a)).collect(),
     };
     Session {
-        name: "generated".into(),
+        name: name.into(),
         machine: None,
         conventions: Some(conv),
         rotor: None,
@@ -178,7 +200,7 @@ pub fn session(
                 kit: None,
             })
             .collect(),
-        sensors: (0..2.min(rows))
+        sensors: (0..sensors)
             .map(|s| Sensor {
                 id: format!("S{s}"),
                 unit: Unit::UmPp,
@@ -190,8 +212,6 @@ pub fn session(
     }
 }
 
-/// A reading with independent radial noise (`pct` % of its amplitude) and
-/// tangential noise (`deg` degrees), the options' noise model.
 /// The reading of sensor `S{sensor}` at `speed_rpm`: phasor `y` (internal
 /// frame) and, if given, its samples, in the conventions `conv`.
 pub fn reading_of(
@@ -221,6 +241,8 @@ pub fn reading_of(
     }
 }
 
+/// A reading with independent radial noise (`pct` % of its amplitude) and
+/// tangential noise (`deg` degrees), the options' noise model.
 pub fn noisy(y: Complex64, pct: f64, deg: f64, rng: &mut StdRng) -> Complex64 {
     let n = Normal::new(0.0, 1.0).unwrap();
     y * c(

@@ -8,7 +8,7 @@
 //! every mass, corrections only in three planes: the exact least-squares
 //! correction leaves a residual over several speeds and sensors.
 
-use fieldbal::balancing::model::{Conventions, Plane, Run, Sensor, Session, Unit, Weight};
+use fieldbal::balancing::model::{Conventions, Session};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
@@ -118,49 +118,6 @@ pub fn session(
     samples: Option<&[Vec<Vec<Complex64>>]>,
 ) -> Session {
     let n = SENSORS.len();
-    let reading = |k: usize, a: usize| {
-        super::reading_of(
-            conv,
-            speeds_rpm[a / n],
-            a % n,
-            y[k][a],
-            samples.map(|s| &s[k][a][..]),
-        )
-    };
-    let run = |k: usize| Run {
-        id: format!("run {k}"),
-        weights: match k {
-            0 => vec![],
-            _ => vec![Weight {
-                plane: format!("P{}", k - 1),
-                mass_g: trial[k - 1],
-                angle_deg: 0.0,
-            }],
-        },
-        readings: (0..y[0].len()).map(|a| reading(k, a)).collect(),
-    };
-    Session {
-        name: "flexible rotor".into(),
-        machine: None,
-        conventions: Some(conv),
-        rotor: None,
-        planes: (0..trial.len())
-            .map(|j| Plane {
-                id: format!("P{j}"),
-                radius_mm: None,
-                positions: None,
-                places_deg: None,
-                kit: None,
-            })
-            .collect(),
-        sensors: (0..n)
-            .map(|s| Sensor {
-                id: format!("S{s}"),
-                unit: Unit::UmPp,
-                label: None,
-            })
-            .collect(),
-        runs: (0..y.len()).map(run).collect(),
-        runout: None,
-    }
+    let speed_rpm = |a: usize| speeds_rpm[a / n];
+    super::session_of("flexible rotor", n, speed_rpm, conv, trial, y, samples)
 }

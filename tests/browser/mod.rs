@@ -5,6 +5,8 @@
 
 pub mod form;
 pub mod job;
+pub mod kit;
+pub mod options;
 pub mod scenes;
 pub mod stand;
 pub mod steps;

@@ -44,8 +44,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         .await
         .unwrap();
     assert_eq!(rows.len(), 8 * 5, "eight speeds × five sensors");
-    b.viewport(1280, 800).await;
-    b.screenshot("runs-multispeed-1280").await;
+    browser::job::shots(b, "runs-multispeed").await;
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
     let shown = form::corrections_on_page(b).await;
@@ -81,7 +80,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         )
         .await
         .unwrap();
-    b.screenshot("solution-multispeed-plots-1280").await;
+    browser::job::shots(b, "solution-multispeed-plots").await;
     stand.stop().await;
 }
 

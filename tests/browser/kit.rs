@@ -21,6 +21,22 @@ const INBOARD_PLACES: &str = "12";
 const OUTBOARD_PLACES: &str = "0 40 100 160 220 290";
 const KITS: [&str; 2] = ["5 10 20", "2 5 10"];
 
+/// A number as the page writes it (num.js `fmt`): `digits` decimals, one more
+/// below 1, at most one from 100 and none from 1000.
+fn fmt(x: f64, digits: usize) -> String {
+    let a = x.abs();
+    let d = if a >= 1000.0 {
+        0
+    } else if a >= 100.0 {
+        digits.min(1)
+    } else if a > 0.0 && a < 1.0 {
+        digits + 1
+    } else {
+        digits
+    };
+    format!("{x:.d$}")
+}
+
 /// The readings of every run of `session` as one CSV file with a column per run.
 fn csv_column_per_run(session: &Value) -> String {
     let runs = session["runs"].as_array().unwrap();
@@ -118,8 +134,8 @@ async fn new_job_copies_the_set_up(b: &Browser, truth: &Value) {
     b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
     b.click("button.new-job").await;
     b.wait_until(
-        "the set-up of the machine's last job is copied",
-        "const e = document.querySelector('[data-field=\"planes[1].id\"]'); return !!e && !e.disabled && e.value === 'outboard'",
+        "the set-up step of the new job is shown",
+        "return !document.querySelector('#step-setup').hidden && document.querySelector('#job-title').textContent === 'New balancing job'",
     )
     .await;
     let mut want = vec![
@@ -181,6 +197,7 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
     type_into(b, &field("planes[1].kit.masses_g"), KITS[1]).await;
     super::job::scroll_to(b, "fieldset.planes").await;
     shots(b, "job-kit-setup").await;
+    super::steps::fits_a_tablet(b, "kit setup").await;
     b.click("#step-setup button.next").await;
 
     // The shapes a CSV file may have are said at the grid, before any file is chosen.
@@ -224,13 +241,14 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
             .text(&format!(".suggestion li[data-plane=\"{plane}\"]"))
             .await;
         let want = format!(
-            "Plane {plane}: {:.1} g at {:.1}°",
-            s["mass_g"].as_f64().unwrap(),
+            "Plane {plane}: {} g at {:.1}°",
+            fmt(s["mass_g"].as_f64().unwrap(), 1),
             s["angle_deg"].as_f64().unwrap().rem_euclid(360.0)
         );
         assert!(text.contains(&want), "{text:?} should say {want:?}");
     }
     shots(b, "job-trial-suggestion").await;
+    super::steps::fits_a_tablet(b, "trial suggestion").await;
     b.click(".suggestion li[data-plane=\"inboard\"] button.use-suggestion")
         .await;
     let used: f64 = value_of(b, &field("runs[1].weights[0].mass_g"))
@@ -319,25 +337,34 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
         let caption = b.text(&format!("{figure} figcaption")).await;
         assert_eq!(caption, format!("Plane {plane}: kit weights"));
         let weights = p["weights"].as_array().unwrap();
-        let words: Vec<String> = weights
+        // Weights stacked at one place are said, and drawn, once.
+        let mut stacks: Vec<(Value, f64, Vec<String>)> = Vec::new();
+        for w in weights {
+            let mass = format!("{} g", fmt(w["mass_g"].as_f64().unwrap(), 1));
+            match stacks.iter_mut().find(|s| s.0 == w["place"]) {
+                Some(s) => s.2.push(mass),
+                None => stacks.push((
+                    w["place"].clone(),
+                    w["angle_deg"].as_f64().unwrap(),
+                    vec![mass],
+                )),
+            }
+        }
+        let words: Vec<String> = stacks
             .iter()
-            .map(|w| {
+            .map(|(place, angle, masses)| {
                 format!(
-                    "{:.1} g at {:.1}° (place {})",
-                    w["mass_g"].as_f64().unwrap(),
-                    w["angle_deg"].as_f64().unwrap().rem_euclid(360.0),
-                    w["place"]
+                    "{} at {:.1}° (place {place})",
+                    masses.join(" + "),
+                    angle.rem_euclid(360.0)
                 )
             })
             .collect();
         assert_eq!(
             b.text(&format!("{figure} .fit-words")).await,
-            words.join(" + ")
+            words.join("\n")
         );
-        let angles: Vec<f64> = weights
-            .iter()
-            .map(|w| w["angle_deg"].as_f64().unwrap())
-            .collect();
+        let angles: Vec<f64> = stacks.iter().map(|s| s.1).collect();
         // With rotation: the angles run clockwise in the picture, as the rotor turns.
         assert_same_angles(&drawn_angles(b, plane, "weight").await, &angles, "weights");
         assert_same_angles(
@@ -366,16 +393,26 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
             marks[3]
         );
     }
+    let fitted = b.text("#step-solve .fit-summary").await;
+    let want = format!(
+        "With the kit weights shown: RMS {}",
+        fmt(service["fit_summary"]["rms_after"].as_f64().unwrap(), 2)
+    );
+    assert!(
+        fitted.starts_with(&want),
+        "{fitted:?} should start {want:?}"
+    );
     // Rotor data: the ISO 21940-11 figure beside the answer.
     let iso = &service["iso_21940"];
     let summary = b.text("#step-solve .summary").await;
     let want = format!(
-        "ISO 21940-11 {GRADE}: permissible {:.0} g·mm per plane",
-        iso["permissible_per_plane_gmm"].as_f64().unwrap()
+        "ISO 21940-11 {GRADE}: permissible {} g·mm per plane",
+        fmt(iso["permissible_per_plane_gmm"].as_f64().unwrap(), 0)
     );
     assert!(summary.contains(&want), "{summary:?} should say {want:?}");
     super::job::scroll_to(b, ".plane-pics").await;
     shots(b, "job-kit-fit").await;
+    super::steps::fits_a_tablet(b, "kit fit").await;
 
     the_machine_page_shows_vibration_before_and_after_per_job(stand).await;
 }
@@ -399,16 +436,7 @@ async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &Stand
         ))
         .await;
         let pair = |a: &str, b: &str| {
-            let f = |k: &str| {
-                let x = sm[k].as_f64().unwrap();
-                if x.abs() >= 1000.0 {
-                    format!("{x:.0}")
-                } else if x != 0.0 && x.abs() < 1.0 {
-                    format!("{x:.2}")
-                } else {
-                    format!("{x:.1}")
-                }
-            };
+            let f = |k: &str| fmt(sm[k].as_f64().unwrap(), 1);
             format!("{}, {}", f(a), f(b))
         };
         assert_eq!(
@@ -430,4 +458,5 @@ async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &Stand
     );
     super::job::scroll_to(b, "h3").await;
     shots(b, "job-machine-jobs").await;
+    super::steps::fits_a_tablet(b, "machine jobs").await;
 }

@@ -103,6 +103,7 @@ pub async fn each_option_reaches_the_request_and_changes_the_answer(b: &Browser,
         "min-max gives other weights"
     );
     shots(b, "job-option-objective").await;
+    super::steps::fits_a_tablet(b, "options open").await;
     super::form::choose(b, "#step-solve select.objective", "least_squares").await;
 
     // A mass limit below the heaviest correction.

@@ -113,7 +113,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         )
         .await
         .expect("scrolls");
-    b.screenshot("setup-planes-1280").await;
+    browser::job::shots(b, "setup-planes").await;
     b.viewport(768, 1024).await;
     b.client
         .execute("window.scrollTo(0, 0)", vec![])
@@ -155,7 +155,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         title.contains("pump-two-plane-exact"),
         "report title: {title}"
     );
-    b.screenshot("report-768").await;
+    browser::job::shots(b, "report").await;
     // On paper only the report shows: no navigation, no print button.
     b.emulate_print(true).await;
     let shown = b

@@ -274,7 +274,7 @@ export function renderRuns(root, solve) {
             ? `Trial runs: one per plane at least (${tried} of ${planes} plane${planes === 1 ? "" : "s"} tried). List every weight that is on the rotor during the run.`
             : `Every plane has had its trial weight (${tried} of ${planes}). Solve, or add a run: list every weight that is on the rotor during it.`),
     d ? h("div", { class: "draft" },
-      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
+      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => { d.id = v; const head = $("th.run.editing .run-name", root); if (head) head.textContent = v || "(new run)"; } })),
       d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
     d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
     d ? h("p", { class: "hint csv-shapes" }, CSV_SHAPES) : "",

@@ -6,6 +6,9 @@
 pub mod form;
 pub mod job;
 pub mod kit;
+pub mod kit_fit;
+pub mod kit_support;
+pub mod machine;
 pub mod options;
 pub mod scenes;
 pub mod stand;
@@ -140,29 +143,41 @@ impl Browser {
     }
 
     /// Resize the window so that the page's viewport is `width` × `height`.
+    /// The page may report its old size for a moment after a resize: wait for
+    /// the new one (bounded) rather than correcting from a stale reading.
     pub async fn viewport(&self, width: u32, height: u32) {
-        self.client
-            .set_window_size(width, height)
-            .await
-            .expect("window resizes");
-        // The window includes no chrome in headless mode, but check and correct once.
-        let inner: (u64, u64) = serde_json::from_value(
+        let want = (width as i64, height as i64);
+        let (mut w, mut h) = want;
+        for _ in 0..3 {
             self.client
-                .execute("return [window.innerWidth, window.innerHeight]", vec![])
-                .await
-                .expect("inner size"),
-        )
-        .expect("two numbers");
-        let (dw, dh) = (
-            width as i64 - inner.0 as i64,
-            height as i64 - inner.1 as i64,
-        );
-        if dw != 0 || dh != 0 {
-            self.client
-                .set_window_size((width as i64 + dw) as u32, (height as i64 + dh) as u32)
+                .set_window_size(w as u32, h as u32)
                 .await
                 .expect("window resizes");
+            let mut frame = (0, 0);
+            for _ in 0..50 {
+                let got: (i64, i64, i64, i64) = serde_json::from_value(
+                    self.client
+                        .execute(
+                            "return [innerWidth, innerHeight, outerWidth, outerHeight]",
+                            vec![],
+                        )
+                        .await
+                        .expect("inner size"),
+                )
+                .expect("four numbers");
+                if (got.0, got.1) == want {
+                    return;
+                }
+                // Window decorations, if any, measured once the window has its new size.
+                if (got.2, got.3) == (w, h) {
+                    frame = (got.2 - got.0, got.3 - got.1);
+                    break;
+                }
+                tokio::time::sleep(Duration::from_millis(50)).await;
+            }
+            (w, h) = (want.0 + frame.0, want.1 + frame.1);
         }
+        panic!("the viewport did not become {width}×{height}");
     }
 
     /// Show the page as it prints (CSS `@media print`), or back as on screen.

@@ -143,41 +143,48 @@ impl Browser {
     }
 
     /// Resize the window so that the page's viewport is `width` × `height`.
-    /// The page may report its old size for a moment after a resize: wait for
-    /// the new one (bounded) rather than correcting from a stale reading.
+    /// The page may report its old size for a moment after a resize: wait
+    /// (bounded) for the size to settle before correcting for the window's frame.
     pub async fn viewport(&self, width: u32, height: u32) {
         let want = (width as i64, height as i64);
-        let (mut w, mut h) = want;
-        for _ in 0..3 {
+        self.client
+            .set_window_size(width, height)
+            .await
+            .expect("window resizes");
+        let inner = self.settled_inner(want).await;
+        let (dw, dh) = (want.0 - inner.0, want.1 - inner.1);
+        if dw != 0 || dh != 0 {
             self.client
-                .set_window_size(w as u32, h as u32)
+                .set_window_size((want.0 + dw) as u32, (want.1 + dh) as u32)
                 .await
                 .expect("window resizes");
-            let mut frame = (0, 0);
-            for _ in 0..50 {
-                let got: (i64, i64, i64, i64) = serde_json::from_value(
-                    self.client
-                        .execute(
-                            "return [innerWidth, innerHeight, outerWidth, outerHeight]",
-                            vec![],
-                        )
-                        .await
-                        .expect("inner size"),
-                )
-                .expect("four numbers");
-                if (got.0, got.1) == want {
-                    return;
-                }
-                // Window decorations, if any, measured once the window has its new size.
-                if (got.2, got.3) == (w, h) {
-                    frame = (got.2 - got.0, got.3 - got.1);
-                    break;
-                }
-                tokio::time::sleep(Duration::from_millis(50)).await;
-            }
-            (w, h) = (want.0 + frame.0, want.1 + frame.1);
+            self.settled_inner(want).await;
         }
-        panic!("the viewport did not become {width}×{height}");
+    }
+
+    /// The page's inner size once it is `want`, or has stayed the same for a few polls.
+    async fn settled_inner(&self, want: (i64, i64)) -> (i64, i64) {
+        let mut last = (-1, -1);
+        let mut same = 0;
+        for _ in 0..40 {
+            let got: (i64, i64) = serde_json::from_value(
+                self.client
+                    .execute("return [innerWidth, innerHeight]", vec![])
+                    .await
+                    .expect("inner size"),
+            )
+            .expect("two numbers");
+            if got == want {
+                return got;
+            }
+            same = if got == last { same + 1 } else { 0 };
+            if same >= 4 {
+                return got;
+            }
+            last = got;
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        last
     }
 
     /// Show the page as it prints (CSS `@media print`), or back as on screen.

@@ -207,6 +207,30 @@ fn a_search_stopped_by_its_bound_says_so_and_gives_a_valid_fit_no_worse_than_its
     }
 }
 
+#[test]
+fn a_search_whose_request_ended_stops_at_its_next_checkpoint() {
+    let (a, b, sums) = big_problem(21);
+    let p = Problem {
+        a: &a,
+        b: &b,
+        sums,
+        objective: Objective::LeastSquares,
+        time_limit: Duration::from_secs(600),
+        node_limit: u64::MAX,
+    };
+    let whole = search(&p, vec![0; 4]);
+    assert!(whole.optimal);
+    let ended = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(true));
+    let found = fieldbal::balancing::cancel::scope(ended, || search(&p, vec![0; 4]));
+    assert!(!found.optimal);
+    assert!(
+        found.nodes * 2 < whole.nodes,
+        "{} of {} nodes",
+        found.nodes,
+        whole.nodes
+    );
+}
+
 fn objective_of(p: &Problem, choice: &[usize]) -> f64 {
     objective(p, choice)
 }

@@ -29,6 +29,7 @@ use num_complex::Complex64;
 
 mod apply;
 mod bias;
+mod dof;
 mod propagate;
 mod region;
 mod remaining;

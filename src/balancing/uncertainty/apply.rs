@@ -121,7 +121,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let undetermined = undetermined_planes(&a);
     let kappas = super::kappa(fit, &prop);
     // Covariances estimated from samples: Hotelling's quantile for their
-    // degrees of freedom (`dof`, method 4.9).
+    // degrees of freedom (`dof`, method 8.5).
     let prior = noise_options(options).map_or(true, |n| n.amplitude_pct > 0.0 || n.phase_deg > 0.0);
     let dofs = super::dof::degrees_of_freedom(fit, cov, prior);
     for (((((corr, &c), cc), &lost), &k), &nu) in solution

@@ -15,7 +15,7 @@
 //! the leading term of `propagate`). A 2-vector error standardised by a
 //! covariance with `ν` degrees of freedom is Hotelling's `T²`, whose 95 %
 //! quantile is `2ν/(ν−1) F₂,ν₋₁(0.95) = ν (0.05^(−2/(ν−1)) − 1)` (method
-//! 4.9), which tends to `χ²₂(0.95) = 5.991` as `ν → ∞`. The reported
+//! 8.5), which tends to `χ²₂(0.95) = 5.991` as `ν → ∞`. The reported
 //! covariance is multiplied by that quantile over 5.991, so its χ²₂ ellipse,
 //! the intervals and `amplitude_95` stay one formula for every source of noise.
 

@@ -11,9 +11,10 @@
 //! the noise (amplitude and phase repeatability differ).
 //!
 //! The estimator: the correction minus its second-order bias, evaluated at the
-//! estimate (the analytic bias correction of Cox & Snell 1968, "A general
-//! definition of residuals", JRSS B 30, §5; the same expansion as the
-//! small-disturbance bias of Nagar 1959). Expanding the normal equations
+//! corrected estimate itself (the fixed point of [`debiased`], method 8.3;
+//! the analytic bias correction of Cox & Snell 1968, "A general definition of
+//! residuals", JRSS B 30, §5; the same expansion as the small-disturbance bias
+//! of Nagar 1959). Expanding the normal equations
 //! `Aᴴ(A C + b) = 0` with `A = A₀ + E`, `b = b₀ + e` to second order:
 //!
 //! `E[Ĉ − C] = −H⁻¹ { Σ_i (1 − P_ii) E[E_iᴴ u_i] − A₀ᴴ diag(d) r₀ − X₁ − X₂ }`
@@ -172,7 +173,7 @@ pub fn debiased(
     };
     // The bias is evaluated at an estimate that is itself attenuated, which
     // leaves `O(δ²)` of it (δ the attenuation, `κ/(1+κ)` over many rows): the
-    // estimate is the fixed point `C* = Ĉ − b(C*)` (Fuller 1987 §2.2's
+    // estimate is the fixed point `C* = Ĉ − b(C*)` (method 8.3; Fuller 1987 §2.2's
     // corrected estimator in the many-row limit), found by iterating while
     // the steps shrink; where they do not, the one-step correction stays.
     let mut est = &c - &first;
@@ -181,7 +182,8 @@ pub fn debiased(
         let Some(b) = bias_at(&est) else { break };
         let next = &c - b;
         let moved = (&next - &est).norm();
-        if !(moved < CONTRACTION * step) {
+        // NaN compares false: it stops the iteration too.
+        if moved.partial_cmp(&(CONTRACTION * step)) != Some(std::cmp::Ordering::Less) {
             break;
         }
         est = next;

@@ -51,7 +51,7 @@ pub fn degrees_of_freedom(fit: &Fit, cov: &[Vec<Matrix2<f64>>], prior: bool) -> 
     let nu = |a: usize, k: usize| {
         let n = checked.reading(a, k).samples.as_ref().map_or(0, Vec::len);
         let pooled = if prior { super::PRIOR_SAMPLES } else { 0.0 };
-        (n >= 2).then(|| n as f64 - 1.0 + pooled)
+        (n >= 2).then_some(n as f64 - 1.0 + pooled)
     };
     if !sel
         .rows

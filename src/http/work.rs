@@ -4,9 +4,11 @@
 //! A solve waits in the queue for at most the configured wait, then the
 //! request is refused with 503 and `Retry-After`, and its solve never runs.
 //! A request dropped while queued (its time limit passed, or the client left)
-//! is skipped by the solver threads; one already solving runs until the core
-//! returns (the core is not interruptible), so the threads bound the CPU and
-//! memory in use even when clients give up.
+//! is skipped by the solver threads; one already solving is asked to stop
+//! (`balancing::cancel`): the kit fit's search stops at its next checkpoint,
+//! while least squares and the cone solves, bounded by their own limits, run
+//! to the end. The threads bound the CPU and memory in use even when clients
+//! give up.
 //!
 //! Why threads of our own and not a semaphore in front of `spawn_blocking`:
 //! under load every finished solve then woke the next waiting request on an
@@ -16,7 +18,7 @@
 
 use std::collections::VecDeque;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::atomic::{AtomicU8, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::time::Duration;
 
@@ -25,7 +27,7 @@ use axum::response::{IntoResponse, Response};
 use tokio::sync::oneshot;
 
 use super::error::ApiError;
-use crate::balancing::InputError;
+use crate::balancing::{cancel, InputError};
 use crate::db::StoreError;
 
 /// Default number of solves that run at once.
@@ -135,14 +137,17 @@ impl Slots {
         work: impl FnOnce() -> T + Send + 'static,
     ) -> Result<T, Refused> {
         let (send, mut answer) = oneshot::channel();
-        let claim = Claim(Arc::new(AtomicU8::new(QUEUED)));
-        let state = claim.0.clone();
+        let claim = Claim {
+            state: Arc::new(AtomicU8::new(QUEUED)),
+            cancel: Arc::new(AtomicBool::new(false)),
+        };
+        let (state, cancel) = (claim.state.clone(), claim.cancel.clone());
         let job: Job = Box::new(move || {
             if state
                 .compare_exchange(QUEUED, STARTED, Ordering::AcqRel, Ordering::Acquire)
                 .is_ok()
             {
-                let _ = send.send(work());
+                let _ = send.send(cancel::scope(cancel, work));
             }
         });
         {
@@ -165,14 +170,18 @@ impl Slots {
     }
 }
 
-/// The request's hold on its queued solve: dropped with the request (time
-/// limit, closed connection), it abandons a solve that has not started.
-struct Claim(Arc<AtomicU8>);
+/// The request's hold on its solve: dropped with the request (time limit,
+/// closed connection), it abandons a solve that has not started and asks one
+/// that has to stop at its next checkpoint (`balancing::cancel`).
+struct Claim {
+    state: Arc<AtomicU8>,
+    cancel: Arc<AtomicBool>,
+}
 
 impl Claim {
     /// True when the solve had not started and now never will.
     fn abandon(&self) -> bool {
-        self.0
+        self.state
             .compare_exchange(QUEUED, ABANDONED, Ordering::AcqRel, Ordering::Acquire)
             .is_ok()
     }
@@ -180,7 +189,10 @@ impl Claim {
 
 impl Drop for Claim {
     fn drop(&mut self) {
-        self.abandon();
+        if !self.abandon() {
+            // Started: a finished solve ignores this; a running one stops.
+            self.cancel.store(true, Ordering::Relaxed);
+        }
     }
 }
 
@@ -251,7 +263,6 @@ impl IntoResponse for Refused {
 
 #[cfg(test)]
 mod tests {
-    use std::sync::atomic::AtomicBool;
     use std::sync::mpsc;
 
     use super::*;
@@ -325,6 +336,35 @@ mod tests {
         assert!(
             !ran.load(Ordering::SeqCst),
             "an abandoned solve must not run"
+        );
+    }
+
+    #[tokio::test]
+    async fn a_running_solve_whose_request_ends_is_asked_to_stop() {
+        let slots = Slots::new(1, Duration::from_secs(30));
+        let saw = Arc::new(AtomicBool::new(false));
+        let flag = saw.clone();
+        let (started, running) = oneshot::channel::<()>();
+        let mut request = Box::pin(slots.solve(move || {
+            let _ = started.send(());
+            let give_up = std::time::Instant::now() + Duration::from_secs(10);
+            while std::time::Instant::now() < give_up {
+                if cancel::requested() {
+                    flag.store(true, Ordering::SeqCst);
+                    return;
+                }
+                std::thread::sleep(Duration::from_millis(1));
+            }
+        }));
+        tokio::select! {
+            _ = &mut request => panic!("the work ends only when cancelled"),
+            _ = running => {}
+        }
+        drop(request);
+        drain(&slots).await;
+        assert!(
+            saw.load(Ordering::SeqCst),
+            "the running work saw the request end"
         );
     }
 

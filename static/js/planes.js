@@ -93,7 +93,9 @@ export function planePicture(plane, solution, correction, direction) {
   });
   for (const w of weights) {
     const [wx, wy] = at(w.angle, direction, R - 10);
-    const [lx, ly] = at(w.angle, direction, R + 30);
+    // Near the top the mark's label is outside the rim: label the weight inside it.
+    const nearMark = Math.abs(((screen(w.angle, direction) + 180) % 360) - 180) < 30;
+    const [lx, ly] = at(w.angle, direction, nearMark ? R - 34 : R + 30);
     const total = w.masses.reduce((a, b) => a + b, 0);
     svg.append(s("circle", { cx: wx, cy: wy, r: 9, class: "weight" }));
     svg.append(s("text", { x: lx, y: ly + 4, class: "label weight-label", "text-anchor": "middle" }, `${fmt(total, 1)} g`));

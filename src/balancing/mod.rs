@@ -8,25 +8,18 @@
 //! values enter (`phasor`) and leave (`solution`).
 
 #[macro_use]
-pub mod wire;
+pub mod session;
 pub mod acceptance;
 pub mod conic;
-pub mod diagnostics;
-pub mod error;
-pub mod factor;
 pub mod fit;
-pub mod influence;
 pub mod job;
-pub mod limits;
-pub mod model;
-pub mod phasor;
-pub mod practical;
-pub mod report;
-pub mod select;
-pub mod solution;
 pub mod solve;
 pub mod uncertainty;
-pub mod validate;
+
+// The modules' paths from before the grouping stay valid, so callers and
+// the documentation keep naming `balancing::model`, `balancing::solution`, ...
+pub use session::{error, limits, model, phasor, select, validate, wire};
+pub use solve::{diagnostics, factor, influence, practical, report, solution};
 
 pub use error::{from_json, ErrorKind, InputError};
 pub use model::{Session, SolveOptions, SolveRequest};

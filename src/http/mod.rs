@@ -4,21 +4,20 @@
 //! [`serve`] on a bound listener with a shutdown future.
 
 pub mod assets;
+pub mod compute;
 pub mod edge;
 pub mod error;
 pub mod extract;
 pub mod headers;
-pub mod identify;
-pub mod machines;
 pub mod openapi;
-pub mod residual;
-pub mod runs;
-pub mod sessions;
-pub mod solve;
+pub mod store;
 #[cfg(test)]
 mod time_limit_tests;
-pub mod trial_weights;
 pub mod work;
+
+// Paths from before the grouping stay valid for callers and tests.
+pub use compute::{identify, residual, solve, trial_weights};
+pub use store::{machines, runs, sessions};
 
 use std::future::Future;
 use std::process::ExitCode;

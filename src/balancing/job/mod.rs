@@ -1,6 +1,6 @@
 //! The job goes on (v2): runout, corrections from the rotor as it is
 //! (`from_run`, with `total` per plane), run checks, and supplied or pooled
-//! influence coefficients. This module wraps the one-shot solve of `solve.rs`.
+//! influence coefficients. This module wraps the one-shot solve of `solve/weighted.rs`.
 //!
 //! `from_run`: the rotor as it was in run `r`, its weights `T_r` still on. The
 //! session is re-referenced to that run (method 2.1 holds for any reference:

@@ -11,16 +11,16 @@ use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::error::{ApiError, ErrorBody};
-use super::extract::JsonBody;
-use super::sessions::ListParams;
-use super::AppState;
 use crate::balancing::job::pool::{self, PoolOptions, Pooled};
 use crate::balancing::model::{Conventions, SolveOptions};
 use crate::balancing::InputError;
 use crate::db::machines::{
     self, MachineDetail, MachineList, Missing, NewMachine, StoredCoefficients,
 };
+use crate::http::error::{ApiError, ErrorBody};
+use crate::http::extract::JsonBody;
+use crate::http::sessions::ListParams;
+use crate::http::AppState;
 
 const GRADES: [&str; 11] = [
     "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
@@ -109,8 +109,8 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<MachineList>, ApiError> {
-    let Query(params) = params.map_err(super::headers::invalid_query)?;
-    let (limit, offset) = super::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
+    let Query(params) = params.map_err(crate::http::headers::invalid_query)?;
+    let (limit, offset) = crate::http::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
     Ok(Json(machines::list(&state.db, limit, offset).await?))
 }
 

@@ -9,15 +9,15 @@ use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::error::{ApiError, ErrorBody};
-use super::extract::JsonBody;
-use super::headers::{self, Page};
-use super::sessions::validate_stored;
-use super::AppState;
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
 use crate::db::idempotency::{self, Keep};
 use crate::db::{self, RunVersion, StoreError};
+use crate::http::error::{ApiError, ErrorBody};
+use crate::http::extract::JsonBody;
+use crate::http::headers::{self, Page};
+use crate::http::sessions::validate_stored;
+use crate::http::AppState;
 
 /// The stored version of a run.
 #[derive(Debug, Serialize, Deserialize, ToSchema)]

@@ -7,7 +7,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::model::{Conventions, Objective, Unit};
+use crate::balancing::model::{Conventions, Objective, Unit};
 
 /// One part of a correction split over two neighbouring fixed places (method 5.1).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]

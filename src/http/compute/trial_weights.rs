@@ -4,12 +4,12 @@
 use axum::extract::State;
 use axum::Json;
 
-use super::error::ErrorBody;
-use super::extract::JsonBody;
-use super::solve::within_solve_request;
-use super::work::Refused;
-use super::AppState;
 use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
+use crate::http::error::ErrorBody;
+use crate::http::extract::JsonBody;
+use crate::http::solve::within_solve_request;
+use crate::http::work::Refused;
+use crate::http::AppState;
 
 #[utoipa::path(post, path = "/api/v1/trial-weights", tag = "solve",
     request_body = TrialRequest,
@@ -42,7 +42,8 @@ pub async fn trial_weights(
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
     let conventions = req.session.conventions.unwrap_or_default();
     let options =
-        super::machines::resolve(&state, conventions, req.options, within_solve_request).await?;
+        crate::http::machines::resolve(&state, conventions, req.options, within_solve_request)
+            .await?;
     // Validating and solving the session costs like a solve: off the async
     // threads, in one of the solve slots.
     let session = req.session;

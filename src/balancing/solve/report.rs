@@ -6,17 +6,17 @@ use std::collections::BTreeSet;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 
-use super::diagnostics::{
+use crate::balancing::diagnostics::{
     condition_number, trial_effect_ratio, SIGNIFICANCE_THRESHOLD, TRIAL_EFFECT_THRESHOLD,
 };
-use super::model::{Objective, SolveOptions};
-use super::phasor::{reading_out, weight_out};
-use super::practical::{grade_value, permissible_unbalance_gmm, split_places};
-use super::solution::{
+use crate::balancing::model::{Objective, SolveOptions};
+use crate::balancing::phasor::{reading_out, weight_out};
+use crate::balancing::practical::{grade_value, permissible_unbalance_gmm, split_places};
+use crate::balancing::solution::{
     Correction, InfluenceCoefficient, IsoTolerance, PlaneDiagnostics, Residual, Solution, Summary,
     Warning,
 };
-use super::solve::Fit;
+use crate::balancing::solve::Fit;
 
 fn warning(code: &str, plane: Option<&str>, message: String) -> Warning {
     Warning {
@@ -43,7 +43,7 @@ fn corrections(fit: &Fit, warnings: &mut Vec<Warning>) -> Vec<Correction> {
         .map(|(&j, &c)| {
             let plane = &session.planes[j];
             let (mass_g, angle_deg) = weight_out(conv, c);
-            let places = super::fit::places::place_angles_deg(plane);
+            let places = crate::balancing::fit::places::place_angles_deg(plane);
             let split = places.map(|places| {
                 let (parts, exact) = split_places(mass_g, angle_deg, &places);
                 if !exact {

@@ -4,16 +4,16 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
-use super::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD};
-use super::error::InputError;
-use super::factor::ThinSvd;
-use super::influence::influence_matrix;
-use super::model::{Session, SolveOptions};
-use super::report;
-use super::select::{select, Selection};
-use super::solution::{Solution, Warning};
-use super::uncertainty;
-use super::validate::{check, Checked};
+use crate::balancing::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD};
+use crate::balancing::error::InputError;
+use crate::balancing::factor::ThinSvd;
+use crate::balancing::influence::influence_matrix;
+use crate::balancing::model::{Session, SolveOptions};
+use crate::balancing::report;
+use crate::balancing::select::{select, Selection};
+use crate::balancing::solution::{Solution, Warning};
+use crate::balancing::uncertainty;
+use crate::balancing::validate::{check, Checked};
 
 /// Everything a solve computed, in the internal frame (method §1). The report
 /// and the extensions (cone solves, uncertainty) read it.
@@ -79,7 +79,9 @@ fn correction(
     planes: &[usize],
 ) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
     // Min-max and mass bounds are cone programs (method 4.1).
-    if let Some(found) = super::conic::wiring::correction(a, b, options, session, planes)? {
+    if let Some(found) =
+        crate::balancing::conic::wiring::correction(a, b, options, session, planes)?
+    {
         return Ok(found);
     }
     Ok((least_squares(a, b)?, Vec::new()))
@@ -99,7 +101,7 @@ pub fn solve_checked<'a>(
     options: &SolveOptions,
 ) -> Result<Solution, InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
-    let supplied = super::job::supplied::resolve(&checked, options)?;
+    let supplied = crate::balancing::job::supplied::resolve(&checked, options)?;
     let w = match &supplied {
         Some(s) => s.w.clone(),
         None => influence_matrix(&checked)?,
@@ -178,11 +180,11 @@ pub fn solve_checked<'a>(
     // Confidence regions from reading noise (issue 6), after the method's warnings.
     match &supplied {
         None => uncertainty::fill(&fit, options, &cov, &mut solution),
-        Some(s) => super::job::supplied::fill(&fit, s, options, noise, &mut solution),
+        Some(s) => crate::balancing::job::supplied::fill(&fit, s, options, noise, &mut solution),
     }
     // The ISO 21940-11 verdict reads the corrections' uncertainty (issue 17).
-    super::acceptance::iso::fill(session, &mut solution);
+    crate::balancing::acceptance::iso::fill(session, &mut solution);
     // Kit weights, jointly over the planes, and the static/couple parts (issue 11).
-    super::fit::fill(&fit, options, &a, &b, &mut solution)?;
+    crate::balancing::fit::fill(&fit, options, &a, &b, &mut solution)?;
     Ok(solution)
 }

@@ -10,10 +10,10 @@ use std::collections::{HashMap, HashSet};
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 
-use super::error::InputError;
-use super::limits::{check_session, too_large, Limits};
-use super::model::{Conventions, Reading, Session};
-use super::phasor::{reading_in, weight_in};
+use crate::balancing::error::InputError;
+use crate::balancing::limits::{check_session, too_large, Limits};
+use crate::balancing::model::{Conventions, Reading, Session};
+use crate::balancing::phasor::{reading_in, weight_in};
 
 /// Speeds closer than this (relative) are the same speed point (contract).
 pub const SPEED_TOLERANCE: f64 = 0.01;
@@ -273,7 +273,7 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
                 ));
             }
         }
-        super::fit::places::check_plane(i, p)?;
+        crate::balancing::fit::places::check_plane(i, p)?;
     }
     if session.sensors.is_empty() {
         return Err(invalid("sensors", "at least one sensor is needed"));
@@ -331,7 +331,7 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     let conventions = session.conventions.unwrap_or_default();
     let (planes, sensors) = check_setup(session)?;
     // Runout vectors (v2), subtracted from the readings below.
-    let runout = super::job::runout::vectors(session, conventions)?;
+    let runout = crate::balancing::job::runout::vectors(session, conventions)?;
     unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
 
     // Per-field checks of every run, and the reference run.

@@ -4,8 +4,8 @@
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 
-use super::error::InputError;
-use super::validate::Checked;
+use crate::balancing::error::InputError;
+use crate::balancing::validate::Checked;
 
 /// Relative singular value below which the trial weights count as dependent.
 const RANK_TOLERANCE: f64 = 1e-9;

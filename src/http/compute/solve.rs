@@ -6,15 +6,15 @@ use axum::http::{HeaderMap, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::Json;
 
-use super::error::{ApiError, ErrorBody};
-use super::extract::{JsonBody, OptionsBody};
-use super::headers::{self, Page};
-use super::work::Refused;
-use super::AppState;
 use crate::balancing::model::{Session, SolveOptions, SolveRequest};
 use crate::balancing::{self, InputError, Solution};
 use crate::db::idempotency;
 use crate::db::{self, StoreError, StoredSolution};
+use crate::http::error::{ApiError, ErrorBody};
+use crate::http::extract::{JsonBody, OptionsBody};
+use crate::http::headers::{self, Page};
+use crate::http::work::Refused;
+use crate::http::AppState;
 
 /// Name a solver error's field within the body of `POST /api/v1/solve`
 /// (`{"session", "options"}`): the core names options as `options.…` and the
@@ -73,7 +73,8 @@ pub async fn solve(
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
     let conventions = req.session.conventions.unwrap_or_default();
     let options =
-        super::machines::resolve(&state, conventions, req.options, within_solve_request).await?;
+        crate::http::machines::resolve(&state, conventions, req.options, within_solve_request)
+            .await?;
     Ok(Json(
         solve_blocking(&state, req.session, options, within_solve_request).await?,
     ))
@@ -106,7 +107,8 @@ pub async fn create_solution(
     let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
     let conventions = session.conventions.unwrap_or_default();
     let resolved =
-        super::machines::resolve(&state, conventions, options.clone(), within_options).await?;
+        crate::http::machines::resolve(&state, conventions, options.clone(), within_options)
+            .await?;
     let solution = solve_blocking(&state, session, resolved, within_options).await?;
     let stored = match db::solutions::store(
         &state.db,

@@ -3,9 +3,9 @@
 
 use axum::Json;
 
-use super::error::{ApiError, ErrorBody};
-use super::extract::JsonBody;
 use crate::balancing::acceptance::{self, ResidualCheck, ResidualRequest};
+use crate::http::error::{ApiError, ErrorBody};
+use crate::http::extract::JsonBody;
 
 #[utoipa::path(post, path = "/api/v1/residual-unbalance", tag = "acceptance",
     request_body = ResidualRequest,

@@ -7,7 +7,7 @@
 
 use num_complex::Complex64;
 
-use super::model::{AngleDirection, Conventions, PhaseConvention};
+use crate::balancing::model::{AngleDirection, Conventions, PhaseConvention};
 
 /// Degrees in `[0, 360)`.
 pub fn wrap_deg(deg: f64) -> f64 {

@@ -4,11 +4,11 @@
 use axum::extract::State;
 use axum::Json;
 
-use super::error::ErrorBody;
-use super::extract::JsonBody;
-use super::work::Refused;
-use super::AppState;
 use crate::balancing::InputError;
+use crate::http::error::ErrorBody;
+use crate::http::extract::JsonBody;
+use crate::http::work::Refused;
+use crate::http::AppState;
 use crate::identification::{
     correct, decay, rotor, FreeDecay, FreeDecayRequest, ModelCorrection, ModelRequest,
     RotorIdentification, RotorRequest,

@@ -3,9 +3,9 @@
 
 use std::collections::HashSet;
 
-use super::error::InputError;
-use super::model::SolveOptions;
-use super::validate::Checked;
+use crate::balancing::error::InputError;
+use crate::balancing::model::SolveOptions;
+use crate::balancing::validate::Checked;
 
 const MAX_ROW_WEIGHT: f64 = 1e6;
 

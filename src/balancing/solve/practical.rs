@@ -1,8 +1,8 @@
 //! Practical forms of a correction (method §5): split over fixed places,
 //! unbalance at a radius, and the ISO 21940-11 permissible residual unbalance.
 
-use super::phasor::wrap_deg;
-use super::solution::SplitPart;
+use crate::balancing::phasor::wrap_deg;
+use crate::balancing::solution::SplitPart;
 
 /// Split a correction of `mass_g` at `angle_deg` over the two neighbouring of
 /// `n` equally spaced places (place `p` at `360°·p/n`, same angle direction), by (5.1).

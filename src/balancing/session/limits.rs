@@ -9,8 +9,8 @@
 
 use std::sync::RwLock;
 
-use super::error::InputError;
-use super::model::{Session, SolveOptions};
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Session, SolveOptions};
 
 /// Largest counts a session may have.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

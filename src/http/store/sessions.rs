@@ -8,15 +8,15 @@ use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::error::{ApiError, ErrorBody};
-use super::extract::JsonBody;
-use super::headers;
-use super::work::check_blocking;
-use super::AppState;
 use crate::balancing::model::Session;
 use crate::balancing::{self, InputError};
 use crate::db::idempotency::{self, Keep};
 use crate::db::{self, SessionList, StoreError};
+use crate::http::error::{ApiError, ErrorBody};
+use crate::http::extract::JsonBody;
+use crate::http::headers;
+use crate::http::work::check_blocking;
+use crate::http::AppState;
 
 /// The id of a stored session (also in the `Location` header).
 #[derive(Debug, Serialize, Deserialize, ToSchema)]
@@ -105,8 +105,8 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<SessionList>, ApiError> {
-    let Query(params) = params.map_err(super::headers::invalid_query)?;
-    let (limit, offset) = super::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
+    let Query(params) = params.map_err(crate::http::headers::invalid_query)?;
+    let (limit, offset) = crate::http::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
     Ok(Json(db::sessions::list(&state.db, limit, offset).await?))
 }
 

@@ -195,7 +195,7 @@ mod tests {
             // 422 invalid_type, like any other value of the wrong type (v1).
             assert_eq!(err.kind, ErrorKind::Invalid, "{err:?}");
             assert_eq!(err.code, "invalid_type");
-            assert!(err.message.ends_with(super::super::wire::NOT_AN_OBJECT));
+            assert!(err.message.ends_with(crate::balancing::wire::NOT_AN_OBJECT));
             assert_eq!(err.field.as_deref(), field);
         }
         let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();

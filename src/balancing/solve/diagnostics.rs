@@ -78,7 +78,7 @@ pub fn undetermined_planes(a: &DMatrix<Complex64>) -> Vec<bool> {
         return vec![true; q];
     }
     // Through the QR of a tall matrix (`factor::right_svd`, issue 15).
-    let (singular_values, v_t) = super::factor::right_svd(&s);
+    let (singular_values, v_t) = crate::balancing::factor::right_svd(&s);
     let smax = singular_values.max();
     for (i, &sv) in singular_values.iter().enumerate() {
         if sv <= UNDETERMINED_TOLERANCE * smax {
@@ -99,7 +99,7 @@ pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
             col /= Complex64::from(norm);
         }
     }
-    let sv = super::factor::singular_values(&s);
+    let sv = crate::balancing::factor::singular_values(&s);
     let (max, min) = (sv.max(), sv.min());
     if max == 0.0 {
         return 1e16;

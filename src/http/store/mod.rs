@@ -1,0 +1,6 @@
+//! The stored resources: sessions, their runs (with versions and ETags) and
+//! machines with their pooled coefficient versions.
+
+pub mod machines;
+pub mod runs;
+pub mod sessions;

@@ -88,7 +88,11 @@ fn session(rng: &mut Rng, planes: usize, sensors: usize, speeds: usize) -> (Valu
     let mut runs = vec![json!({"id": "zero", "weights": [], "readings": readings(&y0, rng)})];
     for j in 0..planes {
         let t = rng.phasor(40.0);
-        let y: Vec<(f64, f64)> = (0..rows).map(|a| add(y0[a], mul(w[a][j], t))).collect();
+        let y: Vec<(f64, f64)> = y0
+            .iter()
+            .zip(&w)
+            .map(|(&y, row)| add(y, mul(row[j], t)))
+            .collect();
         let (mass_g, angle_deg) = polar(t);
         runs.push(json!({"id": format!("trial {j}"),
             "weights": [{"plane": format!("P{j}"), "mass_g": mass_g, "angle_deg": angle_deg}],

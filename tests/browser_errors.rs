@@ -53,7 +53,7 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field()
         .await
         .unwrap();
     assert_eq!(b.text(&msg).await, "not a number");
-    b.screenshot("runs-bad-cell-1280").await;
+    browser::job::shots(b, "runs-bad-cell").await;
     type_into(b, &cell, "330.36690382308").await;
 
     // Store the zero run, then let another client take the next run's name.

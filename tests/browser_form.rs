@@ -113,7 +113,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         )
         .await
         .expect("scrolls");
-    b.screenshot("setup-planes-1280").await;
+    browser::job::shots(b, "setup-planes").await;
     b.viewport(768, 1024).await;
     b.client
         .execute("window.scrollTo(0, 0)", vec![])
@@ -136,7 +136,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         .execute("document.querySelector('.plots').scrollIntoView()", vec![])
         .await
         .expect("scrolls");
-    b.screenshot("solution-plots-1280").await;
+    browser::job::shots(b, "solution-plots").await;
     b.viewport(768, 1024).await;
     b.client
         .execute("window.scrollTo(0, 0)", vec![])
@@ -155,7 +155,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         title.contains("pump-two-plane-exact"),
         "report title: {title}"
     );
-    b.screenshot("report-768").await;
+    browser::job::shots(b, "report").await;
     // On paper only the report shows: no navigation, no print button.
     b.emulate_print(true).await;
     let shown = b
@@ -192,7 +192,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
         .execute("window.scrollTo(0, 0)", vec![])
         .await
         .expect("scrolls");
-    b.screenshot("runs-check-entry-1280").await;
+    browser::job::shots(b, "runs-check-entry").await;
     form::store(b).await;
     // After the check run the solve starts from it: nothing to add, and the
     // one weight per plane that replaces what is on is the first answer.
@@ -279,9 +279,7 @@ async fn a_stored_session_reopens_after_a_reload() {
     b.client.goto(&stand.server.url("/")).await.unwrap();
     b.click("nav [data-step=\"sessions\"]").await;
     b.wait_for("button.open-session").await;
-    b.viewport(768, 1024).await;
-    b.screenshot("sessions-768").await;
-    b.viewport(1280, 800).await;
+    browser::job::shots(b, "sessions").await;
     b.click("button.open-session").await;
     b.wait_for("#step-runs td.value.amp").await;
     assert_eq!(b.text("#job-title").await, "pump-two-plane-exact · stored");

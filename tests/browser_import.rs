@@ -1,6 +1,6 @@
 //! End-to-end tests of the form with sessions imported from JSON files: a
 //! multi-speed job (the grid, the plots), a weak trial run (the warning in
-//! plain words), and the uncertainty shown in technician words.
+//! plain words, its answer greyed), and the uncertainty shown in technician words.
 
 mod browser;
 mod common;
@@ -44,8 +44,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         .await
         .unwrap();
     assert_eq!(rows.len(), 8 * 5, "eight speeds × five sensors");
-    b.viewport(1280, 800).await;
-    b.screenshot("runs-multispeed-1280").await;
+    browser::job::shots(b, "runs-multispeed").await;
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
     let shown = form::corrections_on_page(b).await;
@@ -81,12 +80,28 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         )
         .await
         .unwrap();
-    b.screenshot("solution-multispeed-plots-1280").await;
+    browser::job::shots(b, "solution-multispeed-plots").await;
     stand.stop().await;
 }
 
+/// Words that read as code: with an underscore, a dot between letters, or brackets.
+fn code_words(text: &str) -> Vec<String> {
+    text.split_whitespace()
+        .map(|w| w.trim_matches(|c: char| !c.is_alphanumeric()))
+        .filter(|w| {
+            w.contains('_')
+                || w.contains('[')
+                || w.split('.')
+                    .filter(|p| p.chars().any(char::is_alphabetic))
+                    .count()
+                    > 1
+        })
+        .map(str::to_string)
+        .collect()
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_weak_trial_run_is_warned_about_with_what_to_do() {
+async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed() {
     let stand = Stand::start().await;
     let b = &stand.browser;
     let mut session = common::example("pump-single-plane-noisy.json")["session"].clone();
@@ -105,8 +120,35 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do() {
     let text = warning.text().await.unwrap();
     assert!(text.contains("What to do"), "{text}");
     assert!(text.contains("bigger trial weight"), "{text}");
-    b.viewport(1280, 800).await;
-    b.screenshot("solution-warning-1280").await;
+    // The answer it spoils is greyed, not bold, and says why and what to do.
+    let row = b
+        .client
+        .execute(
+            "const r = document.querySelector('#step-solve table.corrections tbody tr');              const m = r.querySelector('td.corr-mass');              return [r.className, getComputedStyle(m).fontWeight, getComputedStyle(m).color,                      getComputedStyle(document.querySelector('#step-solve table.corrections thead th')).color]",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(row[0], "doubtful", "{row}");
+    assert_eq!(row[1], "400", "not bold: {row}");
+    assert_ne!(
+        row[2], row[3],
+        "greyed, not the ordinary text colour: {row}"
+    );
+    let doubts = b.text("#step-solve .doubts").await;
+    assert!(
+        doubts.contains("too small to measure its effect")
+            && doubts.contains("Repeat the trial run"),
+        "{doubts}"
+    );
+    // Plain words: no backticks, no field names or codes.
+    let words = format!("{}\n{doubts}", b.text("#step-solve .warnings").await);
+    let code_like = code_words(&words);
+    assert!(
+        !words.contains('`') && code_like.is_empty(),
+        "{code_like:?} in {words}"
+    );
+    browser::job::shots(b, "solution-warning").await;
     stand.stop().await;
 }
 

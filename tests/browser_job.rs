@@ -5,7 +5,9 @@
 //! beside its prediction) until within tolerance, the printed report with the
 //! answer on its first page, two tabs on one session, the machine page with a
 //! trim from stored coefficients and a CSV import, a multi-speed job's Bode
-//! plots, touch targets and page weight. One browser and one server for all
+//! plots and each solve option reaching the request, a second job for the
+//! machine with rotor data, fixed places and kits (the trial weight suggested,
+//! the kit fit drawn per plane), touch targets and page weight. One browser and one server for all
 //! (CI time); screenshots of every step at 1280 and 768 wide go to
 //! `target/screenshots/`.
 
@@ -14,6 +16,7 @@ mod common;
 
 use browser::form::{self, field, type_into, type_run, type_setup, value_of};
 use browser::job::{message_for, predicted, scroll_to, shots};
+use browser::kit::new_job_with_rotor_places_and_kits;
 use browser::scenes::{
     machine_page_and_trim_from_stored_coefficients, multi_speed_job_shows_bode_plots,
     the_form_weighs_little_and_asks_nothing_of_other_hosts,
@@ -200,6 +203,9 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     );
     let check2 = named(predicted(url, &truth, &on).await, "check 2");
     type_and_store(b, &session, 4, &check2).await;
+    // Check runs carry weights but are no trials: the count is of planes tried.
+    let lead = b.text("#step-runs p.lead").await;
+    assert!(lead.contains("(2 of 2)"), "{lead}");
     b.click("#step-runs button.go-solve").await;
     b.click("details.options summary").await;
     type_into(b, &field("options.limit"), "5").await;
@@ -213,6 +219,20 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     b.click("nav [data-step=\"report\"]").await;
     type_into(b, "input.report-reason", "1X alarm after impeller repair").await;
     type_into(b, "input.report-by", "A. Fitter").await;
+    // The reason and the signer are kept across a reload, as the runs are.
+    b.client.refresh().await.unwrap();
+    b.wait_for("input.report-reason").await;
+    b.wait_until(
+        "the report step is back",
+        "return !document.querySelector('#step-report').hidden",
+    )
+    .await;
+    assert_eq!(
+        value_of(b, "input.report-reason").await,
+        "1X alarm after impeller repair"
+    );
+    assert_eq!(value_of(b, "input.report-by").await, "A. Fitter");
+    b.wait_for("#step-report .verdict").await;
     shots(b, "job-report").await;
     b.emulate_print(true).await;
     b.viewport(794, 1123).await;
@@ -306,6 +326,7 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     b.click("#step-runs button.cancel").await;
 
     machine_page_and_trim_from_stored_coefficients(&stand, &truth).await;
+    new_job_with_rotor_places_and_kits(&stand, &truth).await;
     multi_speed_job_shows_bode_plots(&stand).await;
     the_form_weighs_little_and_asks_nothing_of_other_hosts(b).await;
     stand.stop().await;

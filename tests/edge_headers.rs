@@ -209,17 +209,50 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
     server.shutdown().await;
 }
 
-/// What hyper answers itself, before the service sees a request, has no body:
-/// a request line it cannot parse, or a header beyond its own buffer. This test
-/// records that limit (README "Connections"); the connection is closed after it.
+/// What hyper answers itself, before the service sees a request (a request it
+/// cannot parse, a target beyond its 64 KiB, more header fields than it
+/// reads), gets the contract's JSON body too, and the connection closes.
 #[tokio::test]
-async fn a_request_line_hyper_cannot_parse_gets_a_bare_400_and_the_connection_closes() {
+async fn requests_hyper_refuses_before_the_service_get_the_contract_error_body() {
     let dir = tempfile::tempdir().unwrap();
     let (addr, server) = start_server(&dir.path().join("t.db")).await;
-    let answer = exchange(addr, b"GET /\x01bad HTTP/1.1\r\nHost: x\r\n\r\n")
-        .await
-        .expect("an answer");
-    assert_eq!(answer.status, 400);
-    assert_eq!(answer.header("connection"), Some("close"));
+    let host = format!("Host: {addr}\r\n");
+    let target = format!("GET /{} HTTP/1.1\r\n{host}\r\n", "a".repeat(70_000));
+    let fields: String = (0..300).map(|i| format!("X-Filler-{i}: {i}\r\n")).collect();
+    let fields = format!("GET /healthz HTTP/1.1\r\n{host}{fields}\r\n");
+    // (what, raw request, status, code)
+    let cases = [
+        (
+            "a control byte in the target",
+            "GET /\x01bad HTTP/1.1\r\nHost: x\r\n\r\n".to_string(),
+            400,
+            "bad_request",
+        ),
+        (
+            "a header line without a colon",
+            format!("GET /healthz HTTP/1.1\r\n{host}Bad Header\r\n\r\n"),
+            400,
+            "bad_request",
+        ),
+        (
+            "not HTTP at all",
+            "GARBAGE\r\n\r\n".to_string(),
+            400,
+            "bad_request",
+        ),
+        ("a 70 kB request target", target, 414, "uri_too_long"),
+        ("300 header fields", fields, 431, "headers_too_large"),
+    ];
+    for (what, request, status, code) in cases {
+        let answer = exchange(addr, request.as_bytes()).await.expect("an answer");
+        assert_eq!(answer.status, status, "{what}");
+        assert_eq!(answer.header("connection"), Some("close"), "{what}");
+        assert_eq!(answer.json()["error"]["code"], code, "{what}");
+        assert_eq!(
+            answer.header("content-type"),
+            Some("application/json"),
+            "{what}"
+        );
+    }
     server.shutdown().await;
 }

@@ -7,7 +7,7 @@ mod fit_support;
 use std::time::Duration;
 
 use fieldbal::balancing::fit::candidates::{loads, plane_candidates};
-use fieldbal::balancing::fit::search::{objective, search, Problem};
+use fieldbal::balancing::fit::search::{objective, search, Found, Problem};
 use fieldbal::balancing::model::{Objective, Session, SolveOptions};
 use fieldbal::balancing::{self, Solution};
 use nalgebra::{DMatrix, DVector};
@@ -168,8 +168,9 @@ fn big_problem(seed: u64) -> (DMatrix<Complex64>, DVector<Complex64>, Vec<Vec<Co
     (a, b, sums)
 }
 
-#[test]
-fn four_planes_of_24_places_with_a_5_size_kit_are_solved_to_proven_optimality() {
+/// The job of four planes of 24 places and a 5-size kit, searched to its
+/// proof unless the request it serves has `ended` (`balancing::cancel`).
+fn search_four_planes(ended: bool) -> Found {
     let (a, b, sums) = big_problem(21);
     let p = Problem {
         a: &a,
@@ -179,7 +180,13 @@ fn four_planes_of_24_places_with_a_5_size_kit_are_solved_to_proven_optimality() 
         time_limit: Duration::from_secs(600),
         node_limit: u64::MAX,
     };
-    let found = search(&p, vec![0; 4]);
+    let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(ended));
+    fieldbal::balancing::cancel::scope(flag, || search(&p, vec![0; 4]))
+}
+
+#[test]
+fn four_planes_of_24_places_with_a_5_size_kit_are_solved_to_proven_optimality() {
+    let found = search_four_planes(false);
     assert!(found.optimal);
     println!("{} candidate evaluations", found.nodes);
 }
@@ -205,6 +212,19 @@ fn a_search_stopped_by_its_bound_says_so_and_gives_a_valid_fit_no_worse_than_its
         assert!((objective_of(&p, &found.choice) - found.value).abs() <= 1e-12 * found.value);
         assert!(found.value <= objective_of(&p, &start));
     }
+}
+
+#[test]
+fn a_search_whose_request_ended_stops_at_its_next_checkpoint() {
+    let whole = search_four_planes(false);
+    let found = search_four_planes(true);
+    assert!(whole.optimal && !found.optimal);
+    assert!(
+        found.nodes * 2 < whole.nodes,
+        "{} of {} nodes",
+        found.nodes,
+        whole.nodes
+    );
 }
 
 fn objective_of(p: &Problem, choice: &[usize]) -> f64 {

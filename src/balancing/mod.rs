@@ -10,6 +10,7 @@
 #[macro_use]
 pub mod session;
 pub mod acceptance;
+pub mod cancel;
 pub mod conic;
 pub mod fit;
 pub mod job;

@@ -78,6 +78,15 @@ export function planePictures(sol) {
   }));
 }
 
+/** What the kit weights leave, beside what the exact corrections would. */
+function fitSummary(sol) {
+  const f = sol.fit_summary;
+  if (!sol.fit || !f) return "";
+  return h("p", { class: "fit-summary" },
+    `With the kit weights shown: RMS ${fmt(f.rms_after, 2)}, largest ${fmt(f.max_after, 2)} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 2)}). `,
+    f.optimal ? "The best choice the kits allow." : "The best choice found in the time allowed, not proven the best.");
+}
+
 /** The weights on the rotor for the next check run: the base run's, plus the corrections (added). */
 function checkWeights(sol, replaceInPlane) {
   const base = baseRun(sol);
@@ -103,6 +112,7 @@ export function answerParts(sol, checkRun) {
     h("div", { class: "scroll" }, correctionsTable(sol)),
     doubts(sol),
     planePictures(sol),
+    fitSummary(sol),
     summaryBox(sol),
     runChecks(sol),
     h("h3", {}, "Predicted vibration after correction"),

@@ -110,6 +110,7 @@ async function open(id, step = "runs", push = true) {
     if (saved && saved.id === state.id) {
       if (saved.draft) state.draft = saved.draft;
       if (saved.options) Object.assign(state.options, saved.options);
+      if (saved.report) state.report = saved.report;
     }
     await loadLastSolution();
     show(step, push);
@@ -182,6 +183,7 @@ function start() {
     state.setup = saved.setup;
     state.draft = saved.draft || null;
     if (saved.options) Object.assign(state.options, saved.options);
+    if (saved.report) state.report = saved.report;
     // Back to the job's own step; the sessions and machines pages are not work to come back to.
     const step = at.step || (["runs", "solve", "report"].includes(saved.step) ? saved.step : "setup");
     return show(step, false);

@@ -9,7 +9,7 @@ import { banner } from "./fields.js";
 import { parseNumber, RULES } from "./num.js";
 import { state, rows } from "./state.js";
 
-export const CSV_SHAPES = "CSV: a row per reading (speed, sensor, amplitude, phase, and optionally run) or a column per run (speed, sensor, then “<run> amplitude”, “<run> phase” for each run).";
+export const CSV_SHAPES = "A CSV file of readings has a header row and one of two shapes: a row per reading (columns speed, sensor, amplitude, phase, and optionally run) or a column per run (speed, sensor, then “<run> amplitude” and “<run> phase” for each run, e.g. “zero amplitude”). Separate by commas, or by semicolons when decimals are written with a comma.";
 
 /** Split CSV text into rows of fields (quotes as RFC 4180). */
 function split(text, sep) {
@@ -119,7 +119,10 @@ export function csvImportButton(root, rerender) {
     const f = file.files[0];
     const d = state.draft;
     if (!f || !d) return;
-    const r = readingsFromCsv(await f.text(), d.id);
+    const text = await f.text();
+    // The same file may be chosen again (after renaming the run to the one in it).
+    file.value = "";
+    const r = readingsFromCsv(text, d.id);
     if (r.error) return banner(root, "error", `${f.name} was not read: ${r.error}. ${CSV_SHAPES}`);
     const { filled, unknown } = fillDraft(d, r.readings);
     rerender();

@@ -1,7 +1,7 @@
 // Work not yet stored on the service, kept in this browser's local storage so
 // that a reload (or a closed tab) loses nothing: the set-up before the zero run
-// is stored, the run being typed, and the step shown. Cleared piece by piece
-// as the service stores it.
+// is stored, the run being typed, the report's reason and signer, and the
+// step shown. Cleared piece by piece as the service stores it.
 
 import { state } from "./state.js";
 
@@ -14,6 +14,7 @@ function snapshot(step) {
     setup: state.id === null ? state.setup : null,
     draft: state.draft,
     options: state.options,
+    report: state.report,
     step,
   };
 }

@@ -77,11 +77,12 @@ async function machinePage(root, id, go) {
     h("h3", {}, "Jobs over time"),
     trend(sessions),
     h("div", { class: "scroll" }, h("table", { class: "sessions machine-jobs" },
-      h("thead", {}, h("tr", {}, h("th", {}, "Job"), h("th", {}, "Stored"), h("th", {}, "Runs"), h("th", {}, "RMS before → after"))),
-      h("tbody", {}, sessions.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No jobs for this machine yet.")) : sessions.map((x) => h("tr", {},
+      h("thead", {}, h("tr", {}, h("th", {}, "Job"), h("th", {}, "Stored"), h("th", {}, "Runs"), h("th", {}, "Vibration before: RMS, largest"), h("th", {}, "After (predicted): RMS, largest"))),
+      h("tbody", {}, sessions.length === 0 ? h("tr", {}, h("td", { colspan: 5 }, "No jobs for this machine yet.")) : sessions.map((x) => h("tr", {},
         h("td", {}, h("button", { type: "button", class: "link open-session", onclick: () => go.openSession(x.id) }, x.name || x.id)),
         h("td", {}, when(x.created_at)), h("td", {}, String(x.runs ?? "")),
-        h("td", {}, x.summary ? `${fmt(x.summary.rms_before, 1)} → ${fmt(x.summary.rms_after, 1)}` : "not solved")))))),
+        x.summary ? [h("td", { class: "before" }, `${fmt(x.summary.rms_before, 1)}, ${fmt(x.summary.max_before, 1)}`), h("td", { class: "after" }, `${fmt(x.summary.rms_after, 1)}, ${fmt(x.summary.max_after, 1)}`)]
+          : h("td", { colspan: 2 }, "not solved")))))),
     h("h3", {}, "Coefficient versions"),
     coefficients.length === 0 ? h("p", { class: "hint" }, "None stored yet. Solve a job with trial runs, then store the coefficients from it: later jobs can trim with only a reference run.")
       : h("table", { class: "coeff-versions" },

@@ -84,7 +84,7 @@ export function renderReport(root) {
   const runs = state.runs.filter((r) => r.stored);
   const sol = state.solution;
   const now = new Date();
-  const info = state.report || (state.report = { reason: "", by: "" });
+  const info = state.report;
   const units = new Map(setup.sensors.map((x) => [x.id, x.unit]));
   replace(root,
     h("div", { class: "no-print report-fields" },

@@ -7,8 +7,8 @@ import { h, replace, $ } from "./dom.js";
 import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "./fields.js";
 import { fmt, unitLabel, DECIMAL_RULE } from "./num.js";
 import { api, ApiError } from "./api.js";
-import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession } from "./state.js";
-import { csvImportButton } from "./csv.js";
+import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "./state.js";
+import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
 
 function angleWords() {
@@ -256,7 +256,9 @@ export function renderRuns(root, solve) {
   if (state.draft) reshapeDraft(state.draft);
   const rerender = () => renderRuns(root, solve);
   const d = state.draft;
-  const trials = state.runs.filter((r) => r.stored && r.weights.length > 0).length;
+  // Planes tried, not runs with weights: check runs carry weights too, and
+  // counting them said "4 of 2 stored" after two check runs.
+  const tried = state.setup.planes.filter((p) => triedPlanes().has(p.id)).length;
   const planes = state.setup.planes.length;
   const k = d ? draftPosition() : -1;
   replace(
@@ -268,11 +270,14 @@ export function renderRuns(root, solve) {
         ? "Check run: fit the corrections below, take every trial weight off, run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
         : state.options.coefficientsFrom && referenceRun()
           ? `Trim job from the stored coefficients of machine ${state.options.coefficientsFrom.machine}: no trial runs are needed. Solve now.`
-          : `Trial runs: one per plane at least (${trials} of ${planes} stored). List every weight that is on the rotor during the run.`),
+          : tried < planes
+            ? `Trial runs: one per plane at least (${tried} of ${planes} plane${planes === 1 ? "" : "s"} tried). List every weight that is on the rotor during the run.`
+            : `Every plane has had its trial weight (${tried} of ${planes}). Solve, or add a run: list every weight that is on the rotor during it.`),
     d ? h("div", { class: "draft" },
-      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => (d.id = v) })),
+      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => { d.id = v; const head = $("th.run.editing .run-name", root); if (head) head.textContent = v || "(new run)"; } })),
       d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
     d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
+    d ? h("p", { class: "hint csv-shapes" }, CSV_SHAPES) : "",
     h("div", { onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root, rerender); } } }, grid(rerender)),
     h("div", { class: "actions sticky" },
       d ? [
@@ -281,7 +286,7 @@ export function renderRuns(root, solve) {
         state.runs.some((r) => r.stored) ? h("button", { type: "button", class: "cancel", onclick: () => { state.draft = null; rerender(); } }, "Cancel") : "",
       ] : [
         h("button", { type: "button", class: "add-trial", onclick: () => { newDraft(); rerender(); $(`[data-field="runs[${state.runs.length}].weights[0].mass_g"]`, root)?.focus(); } }, "+ Add trial run"),
-        h("button", { type: "button", class: "primary go-solve", disabled: trials < planes && !state.options.coefficientsFrom, onclick: solve }, "Solve →"),
+        h("button", { type: "button", class: "primary go-solve", disabled: tried < planes && !state.options.coefficientsFrom, onclick: solve }, "Solve →"),
       ],
     ),
   );

@@ -24,8 +24,8 @@ function planeRow(plane, i, locked, rerender) {
     h("td", {}, textInput({ field: `planes[${i}].id`, value: plane.id, required: true, label: `Plane ${i + 1} name`, placeholder: "e.g. A", disabled: locked, size: 10, maxlength: 64, onValue: (v) => (plane.id = v) })),
     h("td", {}, numberInput({ field: `planes[${i}].radius_mm`, kind: "radius", value: plane.radius_mm, required: false, label: `Plane ${i + 1} radius, mm`, disabled: locked, onValue: (v) => (plane.radius_mm = v) })),
     h("td", {}, numberInput({ field: `planes[${i}].positions`, kind: "positions", value: plane.positions, required: false, label: `Plane ${i + 1} fixed places`, placeholder: "free", disabled: locked, size: 5, onValue: (v) => (plane.positions = v) })),
-    h("td", {}, listInput({ field: `planes[${i}].places_deg`, kind: "angle", value: plane.places_deg, label: `Plane ${i + 1} places at, degrees`, placeholder: "e.g. 0 40 100", disabled: locked, onValue: (v) => (plane.places_deg = v) })),
-    h("td", {}, listInput({ field: `planes[${i}].kit.masses_g`, kind: "mass", value: plane.kit && plane.kit.masses_g, label: `Plane ${i + 1} kit weights, g`, placeholder: "e.g. 5 10 20", disabled: locked, onValue: (v) => (plane.kit = v ? { masses_g: v, max_per_place: (plane.kit && plane.kit.max_per_place) || 2 } : null) })),
+    h("td", {}, listInput({ field: `planes[${i}].places_deg`, kind: "angle", value: plane.places_deg, label: `Plane ${i + 1} places at, degrees`, placeholder: "e.g. 0 40 100", disabled: locked, size: 16, onValue: (v) => (plane.places_deg = v) })),
+    h("td", {}, listInput({ field: `planes[${i}].kit.masses_g`, kind: "mass", value: plane.kit && plane.kit.masses_g, label: `Plane ${i + 1} kit weights, g`, placeholder: "e.g. 5 10 20", disabled: locked, size: 10, onValue: (v) => (plane.kit = v ? { masses_g: v, max_per_place: (plane.kit && plane.kit.max_per_place) || 2 } : null) })),
     h("td", {}, locked || state.setup.planes.length < 2 ? "" : h("button", { type: "button", class: "small", "aria-label": `Remove plane ${i + 1}`, onclick: () => { state.setup.planes.splice(i, 1); rerender(); } }, "Remove")),
   );
 }
@@ -45,8 +45,8 @@ function sensorRow(sensor, i, locked, rerender) {
  * A list of numbers typed in one field ("0 40 100" or "0; 40; 100"), each
  * checked by the rule of `kind`; `onValue` gets the list, or null when empty.
  */
-function listInput({ field, kind, value, label, placeholder, disabled, onValue }) {
-  const input = h("input", { type: "text", class: "list", dataset: { field }, "aria-label": label, placeholder, disabled, size: 12, value: Array.isArray(value) ? value.join(" ") : "", autocomplete: "off" });
+function listInput({ field, kind, value, label, placeholder, disabled, onValue, size = 12 }) {
+  const input = h("input", { type: "text", class: "list", dataset: { field }, "aria-label": label, placeholder, disabled, size, value: Array.isArray(value) ? value.join(" ") : "", autocomplete: "off" });
   const validate = () => {
     const text = input.value.trim();
     if (text === "") { mark(input, ""); onValue(null); return true; }

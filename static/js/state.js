@@ -12,7 +12,12 @@ export const state = {
   solutionDate: null,
   options: defaultOptions(),
   etag: null, // the stored session's ETag as this page last read it (two tabs)
+  report: emptyReport(), // the report's own fields: the reason and who balanced
 };
+
+export function emptyReport() {
+  return { reason: "", by: "" };
+}
 
 /** Solve options as the form edits them (see solveOptions in options.js). */
 export function defaultOptions() {
@@ -49,6 +54,7 @@ export function resetJob() {
   state.solutionDate = null;
   state.options = defaultOptions();
   state.etag = null;
+  state.report = emptyReport();
 }
 
 /** The grid's rows in reading order: every speed, and every sensor at it. */

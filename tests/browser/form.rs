@@ -35,14 +35,18 @@ pub fn field(path: &str) -> String {
     format!("[data-field=\"{path}\"]")
 }
 
-/// The value an input holds now.
+/// The value an input holds now (read in one script: a step drawn afresh
+/// between finding the input and reading it would leave a stale element).
 pub async fn value_of(b: &Browser, css: &str) -> String {
-    b.wait_for(css)
-        .await
-        .prop("value")
-        .await
-        .expect("value property")
-        .unwrap_or_default()
+    b.wait_for(css).await;
+    let script = format!(
+        "const e = document.querySelector({}); return e ? String(e.value ?? '') : null",
+        serde_json::to_string(css).expect("a selector")
+    );
+    let got = b.client.execute(&script, vec![]).await.expect("value read");
+    got.as_str()
+        .unwrap_or_else(|| panic!("{css} went away while being read"))
+        .to_string()
 }
 
 /// Speeds of the reference run, in order of first appearance (the grid's order).

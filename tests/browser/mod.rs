@@ -5,6 +5,11 @@
 
 pub mod form;
 pub mod job;
+pub mod kit;
+pub mod kit_fit;
+pub mod kit_support;
+pub mod machine;
+pub mod options;
 pub mod scenes;
 pub mod stand;
 pub mod steps;
@@ -138,29 +143,48 @@ impl Browser {
     }
 
     /// Resize the window so that the page's viewport is `width` × `height`.
+    /// The page may report its old size for a moment after a resize: wait
+    /// (bounded) for the size to settle before correcting for the window's frame.
     pub async fn viewport(&self, width: u32, height: u32) {
+        let want = (width as i64, height as i64);
         self.client
             .set_window_size(width, height)
             .await
             .expect("window resizes");
-        // The window includes no chrome in headless mode, but check and correct once.
-        let inner: (u64, u64) = serde_json::from_value(
-            self.client
-                .execute("return [window.innerWidth, window.innerHeight]", vec![])
-                .await
-                .expect("inner size"),
-        )
-        .expect("two numbers");
-        let (dw, dh) = (
-            width as i64 - inner.0 as i64,
-            height as i64 - inner.1 as i64,
-        );
+        let inner = self.settled_inner(want).await;
+        let (dw, dh) = (want.0 - inner.0, want.1 - inner.1);
         if dw != 0 || dh != 0 {
             self.client
-                .set_window_size((width as i64 + dw) as u32, (height as i64 + dh) as u32)
+                .set_window_size((want.0 + dw) as u32, (want.1 + dh) as u32)
                 .await
                 .expect("window resizes");
+            self.settled_inner(want).await;
         }
+    }
+
+    /// The page's inner size once it is `want`, or has stayed the same for a few polls.
+    async fn settled_inner(&self, want: (i64, i64)) -> (i64, i64) {
+        let mut last = (-1, -1);
+        let mut same = 0;
+        for _ in 0..40 {
+            let got: (i64, i64) = serde_json::from_value(
+                self.client
+                    .execute("return [innerWidth, innerHeight]", vec![])
+                    .await
+                    .expect("inner size"),
+            )
+            .expect("two numbers");
+            if got == want {
+                return got;
+            }
+            same = if got == last { same + 1 } else { 0 };
+            if same >= 4 {
+                return got;
+            }
+            last = got;
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        last
     }
 
     /// Show the page as it prints (CSS `@media print`), or back as on screen.

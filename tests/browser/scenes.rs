@@ -98,7 +98,8 @@ pub async fn machine_page_and_trim_from_stored_coefficients(stand: &Stand, truth
     shots(b, "job-trim-from-stored").await;
 }
 
-/// (f) A job over many speeds: a Bode and a polar plot per sensor, the polar filter.
+/// (f) A job over many speeds: a Bode and a polar plot per sensor, the polar
+/// filter; then each solve option on it.
 pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     let b = &stand.browser;
     let example = crate::common::example("compressor-multispeed-noisy.json");
@@ -146,6 +147,7 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     scroll_to(b, ".bode-plots").await;
     shots(b, "job-bode").await;
     fits_a_tablet(b, "multi-speed corrections").await;
+    super::options::each_option_reaches_the_request_and_changes_the_answer(b, session).await;
 }
 
 /// The page weighs under 250 kB and asks nothing of any other host.

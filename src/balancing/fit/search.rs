@@ -77,6 +77,9 @@ struct State<'p, 'a> {
     limit: f64,
     best_value: f64,
     nodes: u64,
+    /// Node count at which the clock and the cancellation flag are next read:
+    /// `nodes` grows by a node's children at once, so it may skip any multiple.
+    next_check: u64,
     start: Instant,
     stopped: bool,
     children: Vec<Vec<(f64, usize)>>,
@@ -91,10 +94,13 @@ impl State<'_, '_> {
     }
 
     fn out_of_budget(&mut self) -> bool {
-        if self.nodes > self.p.node_limit
-            || (self.nodes % 1024 == 0 && self.start.elapsed() > self.p.time_limit)
-        {
+        if self.nodes > self.p.node_limit {
             self.stopped = true;
+        } else if self.nodes >= self.next_check {
+            self.next_check = self.nodes + 1024;
+            if self.start.elapsed() > self.p.time_limit || crate::balancing::cancel::requested() {
+                self.stopped = true;
+            }
         }
         self.stopped
     }
@@ -189,6 +195,7 @@ pub fn search(p: &Problem, start: Vec<usize>) -> Found {
         limit: 0.0,
         best_value: start_value,
         nodes: 0,
+        next_check: 0,
         start: Instant::now(),
         stopped: false,
         children: vec![Vec::new(); n],

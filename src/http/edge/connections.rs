@@ -132,7 +132,9 @@ async fn serve_one(
     // never reads cannot hold its connection (and a slot of the cap) forever.
     let mut io = tokio_io_timeout::TimeoutStream::new(stream);
     io.set_write_timeout(Some(limits.write_timeout));
-    let conn = builder.serve_connection(TokioIo::new(Box::pin(io)), service);
+    // hyper's own bare 400/414/431 get the contract's JSON body (unparsed.rs).
+    let io = super::unparsed::ErrorBodies::new(Box::pin(io));
+    let conn = builder.serve_connection(TokioIo::new(io), service);
     tokio::pin!(conn);
     // The guard `wait_for` returns is not `Send`: drop it inside.
     let stopping = async move {

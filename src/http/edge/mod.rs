@@ -7,6 +7,7 @@ pub mod access;
 pub mod connections;
 pub mod hosts;
 mod protocol;
+mod unparsed;
 
 use std::path::PathBuf;
 use std::sync::Arc;

@@ -1,6 +1,6 @@
 //! Protocol-level answers in the contract's shape: the request-line and header
 //! limits checked here (414/431 with the JSON error, below hyper's own harder
-//! limits, whose answers have no body), a JSON body for any error answered
+//! limits, whose bare answers `unparsed.rs` completes), a JSON body for any error answered
 //! without one, and the security headers of every response.
 
 use axum::body::Body;
@@ -9,7 +9,7 @@ use axum::response::{IntoResponse, Response};
 
 use crate::http::error::ApiError;
 
-/// Longest request target answered (hyper's own limit, 65,534 bytes, answers 414 without a body).
+/// Longest request target answered (hyper refuses over 65,534 bytes itself: `unparsed.rs`).
 pub const MAX_URI_BYTES: usize = 8 * 1024;
 /// Most header fields answered (hyper's own limit is set to twice this).
 pub const MAX_HEADERS: usize = 100;

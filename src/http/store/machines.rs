@@ -20,6 +20,7 @@ use crate::db::machines::{
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::sessions::ListParams;
+use crate::http::work::Refused;
 use crate::http::AppState;
 
 const GRADES: [&str; 11] = [
@@ -160,14 +161,15 @@ pub struct PoolRequest {
         (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
+        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
     ))]
 pub async fn pool_coefficients(
     State(state): State<AppState>,
     Path(id): Path<String>,
     JsonBody(req): JsonBody<PoolRequest>,
-) -> Result<(StatusCode, Json<StoredCoefficients>), ApiError> {
+) -> Result<(StatusCode, Json<StoredCoefficients>), Refused> {
     if !machines::exists(&state.db, &id).await? {
-        return Err(ApiError::not_found(format!("no machine has the id '{id}'")));
+        return Err(ApiError::not_found(format!("no machine has the id '{id}'")).into());
     }
     if req.sessions.is_empty() {
         return Err(invalid("sessions", "list at least one session of this machine").into());
@@ -209,15 +211,17 @@ pub async fn pool_coefficients(
     }
     let named: Vec<(String, _)> = req.sessions.iter().cloned().zip(loaded).collect();
     let options = req.options.clone();
-    let pooled = tokio::task::spawn_blocking(move || pool::pool(&named, &options))
-        .await
-        .map_err(|e| ApiError::internal(&e))??;
+    // Pooling is a least-squares fit per row: CPU work, in the solve slots.
+    let pooled = state
+        .solves
+        .solve(move || pool::pool(&named, &options))
+        .await??;
     let body = match serde_json::to_value(&pooled).map_err(|e| ApiError::internal(&e))? {
         serde_json::Value::Object(mut m) => {
             m.remove("sessions");
             m
         }
-        _ => return Err(ApiError::internal(&"pooled coefficients are not an object")),
+        _ => return Err(ApiError::internal(&"pooled coefficients are not an object").into()),
     };
     let stored = machines::store_coefficients(&state.db, &id, &pooled.sessions, body).await?;
     Ok((StatusCode::CREATED, Json(stored)))

@@ -1,0 +1,53 @@
+//! The machine page after three jobs: each job's vibration before and after,
+//! and the trend of both.
+
+use serde_json::json;
+
+use super::job::shots;
+use super::kit_support::{fmt, get};
+use super::stand::Stand;
+use super::steps::js;
+
+/// The machine's jobs, each with its vibration before and after, and the trend of both.
+pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &Stand) {
+    let b = &stand.browser;
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.wait_for("table.machine-jobs td.after").await;
+    let machine = get(stand, "/api/v1/machines/PUMP-1").await;
+    let jobs = machine["sessions"].as_array().unwrap();
+    assert_eq!(jobs.len(), 3, "the first job, the trim job and the kit job");
+    for job in jobs {
+        let name = job["name"].as_str().unwrap();
+        let sm = &job["summary"];
+        let row = js(b, &format!(
+            "const r = [...document.querySelectorAll('table.machine-jobs tbody tr')].find((r) => r.querySelector('button.open-session').textContent === {}); \
+             return [r.querySelector('td.before').textContent, r.querySelector('td.after').textContent]",
+            serde_json::to_string(name).unwrap()
+        ))
+        .await;
+        let pair = |a: &str, b: &str| {
+            let f = |k: &str| fmt(sm[k].as_f64().unwrap(), 1);
+            format!("{}, {}", f(a), f(b))
+        };
+        assert_eq!(
+            row[0],
+            json!(pair("rms_before", "max_before")),
+            "{name}: before"
+        );
+        assert_eq!(
+            row[1],
+            json!(pair("rms_after", "max_after")),
+            "{name}: after"
+        );
+    }
+    let points = js(b, "return [document.querySelectorAll('svg.trend path.series').length, document.querySelectorAll('svg.trend circle').length]").await;
+    assert_eq!(
+        points,
+        json!([2, 2 * jobs.len()]),
+        "before and after, a point per job"
+    );
+    super::job::scroll_to(b, "h3").await;
+    shots(b, "job-machine-jobs").await;
+    super::steps::fits_a_tablet(b, "machine jobs").await;
+}

@@ -102,6 +102,16 @@ fn benches(c: &mut Criterion) {
     c.bench_function("solve two planes, 4 sensors, 1 speed", |b| {
         b.iter(|| solve(black_box(&small), &options).unwrap())
     });
+    // Stated noise: the errors-in-variables correction iterated to its
+    // fixed point runs too (issue 12, uncertainty::bias).
+    let stated = SolveOptions {
+        amplitude_noise_pct: Some(2.0),
+        phase_noise_deg: Some(2.0),
+        ..SolveOptions::default()
+    };
+    c.bench_function("solve two planes, 4 sensors, 1 speed, stated noise", |b| {
+        b.iter(|| solve(black_box(&small), &stated).unwrap())
+    });
     let large = job(16, 32, 40);
     let mut group = c.benchmark_group("large");
     group.sample_size(20);

@@ -3,21 +3,42 @@
 //! and at ten, with the options' noise model and with `samples` scatter, the
 //! 95 % ellipses hold the exact correction and `amplitude_95` holds the
 //! vibration that really remains in 93–97 % of realisations, and the mean
-//! correction lies within 0.1 standard deviations of the exact one.
+//! correction lies within 0.1 standard deviations of the exact one wherever
+//! the answer does not flag most planes `trial_effect_small` (at one speed
+//! with 10–20 % trials it does, and the mean is 0.13–0.19 sd off there).
 //!
-//! Binomial tolerance. A case tallies `N` = realisations × planes ellipse
-//! checks (and realisations × rows residual checks). For a method whose true
-//! coverage lies in 93–97 %, the observed fraction lies within
-//! 3 sd = 3·√(p(1−p)/N) of that window with probability above 99.8 %, so each
-//! case asserts the window widened by 3 sd (about ±1.9 % at N = 1200): a correct
-//! method passes reliably, and one at 90 % or below (the first-order regions
-//! at small trials, issue 12) or at 99 % or above (the old `amplitude_95`)
-//! fails. All cases pooled (N ≈ 10⁴, sd ≈ 0.2 %) must lie in 93–97 % itself.
+//! Binomial tolerance. A case's ellipse checks are realisations × planes,
+//! its `amplitude_95` checks realisations × rows; the checks of one
+//! realisation are correlated (they share its readings), so the standard
+//! error of a case's coverage is taken from the spread of the per-realisation
+//! hit fractions, `sd = √(Var(h_r) / R)` (the cluster standard error; never
+//! below the independent-checks binomial `√(0.95·0.05 / N)`). Each case must lie
+//! in 93–97 % widened by 3 sd. The measured sd is 0.6–1.1 % at 400
+//! realisations (one speed's three planes err together, so more than the
+//! 0.63 % of 1200 independent checks). A correct method (true coverage in
+//! 93–97 %) then fails a case with probability below 0.14 %; one at a true
+//! 85 % (the issue's first-order regions held 67–84 % at small trials) fails it
+//! with probability above 99 %, one at 90 % with probability 40–85 % by the
+//! case's sd. All eight cases of a noise source pooled (sd ≈ 0.3 %) must lie in
+//! 93–97 % widened by 3 pooled sd (about 92.1–97.9 %): a method at 90 % (or
+//! 99 %) in every case fails that with certainty (5 sd and more).
+//!
+//! Mean correction within 0.1 sd. Per plane the mean error over `R`
+//! realisations and their sample covariance `S` give Hotelling's
+//! `T² = R·m̄ᵀ S⁻¹ m̄`; a bias of `β` sd (`β² = bᵀΣ⁻¹b / 2`, the mean square
+//! over both axes) makes `T²` noncentral χ²₂ with `λ = 2Rβ²`. A case sums the
+//! three planes, χ²₆(λ): at `β = 0.1` in every plane `λ = 24`, whose 99 %
+//! quantile is 59.3 (Patnaik's two-moment approximation with Wilson–Hilferty:
+//! `c = (6+2λ)/(6+λ) = 1.8`, `h = (6+λ)²/(6+2λ) = 16.7`,
+//! `c·h·(1 − 2/9h + 2.326·√(2/9h))³ = 59.3`). A case passes when the sum is
+//! at most that (an observed root-mean-square bias of 0.157 sd): a method
+//! within 0.1 sd passes with probability above 99 %, one 0.2 sd off
+//! (`λ = 96`, mean 102, sd 20) fails with probability about 98 %.
 
 use fieldbal::balancing::model::{AngleDirection, Conventions, PhaseConvention, SolveOptions};
 use fieldbal::balancing::phasor::weight_in;
 use fieldbal::balancing::uncertainty::CHI2_2_95;
-use nalgebra::{DVector, Vector2};
+use nalgebra::{DVector, Matrix2, Vector2};
 use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
@@ -43,19 +64,34 @@ const REALISATIONS: usize = 400;
 /// What one case tallied.
 #[derive(Default)]
 struct Tally {
-    ellipse: (usize, usize),
-    /// Ellipse checks of the planes without `trial_effect_small`.
-    trusted: (usize, usize),
-    amplitude: (usize, usize),
-    /// Per plane: sum of (estimate − exact) and of |estimate − mean|² pieces.
+    /// Per realisation: the fraction of planes whose ellipse held the exact correction.
+    ellipse: Vec<f64>,
+    /// Per realisation: the fraction of rows whose `amplitude_95` held.
+    amplitude: Vec<f64>,
+    /// Checks per realisation: planes, rows.
+    checks: (usize, usize),
+    /// Plane checks under a `trial_effect_small` warning.
+    flagged: usize,
+    /// Per plane: estimate − exact, per realisation.
     errors: Vec<Vec<Complex64>>,
 }
 
-fn window(hits: usize, n: usize, pad_sd: f64) -> (f64, f64, f64) {
-    let p = hits as f64 / n as f64;
-    let sd = (0.95 * 0.05 / n as f64).sqrt();
-    (p, 0.93 - pad_sd * sd, 0.97 + pad_sd * sd)
+/// Coverage of per-realisation hit fractions, with its standard error (module doc).
+fn coverage(hits: &[f64], checks: usize) -> (f64, f64) {
+    let r = hits.len() as f64;
+    let p = hits.iter().sum::<f64>() / r;
+    let var = hits.iter().map(|h| (h - p).powi(2)).sum::<f64>() / (r - 1.0);
+    let binomial = (0.95 * 0.05 / (r * checks as f64)).sqrt();
+    (p, (var / r).sqrt().max(binomial))
 }
+
+/// Whether a coverage `p` with standard error `sd` lies in 93–97 % widened by 3 sd.
+fn in_window((p, sd): (f64, f64)) -> bool {
+    (0.93 - 3.0 * sd..=0.97 + 3.0 * sd).contains(&p)
+}
+
+/// 99 % quantile of the summed `T²` of three planes each biased by 0.1 sd (module doc).
+const BIAS_T2_LIMIT: f64 = 59.3;
 
 /// Noisy realisations of one case. `samples`: each reading the mean of 6
 /// samples scattering 5 %/5° (about 2 %/2° for the mean, like the default).
@@ -74,6 +110,7 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
     let planes = rotor.trial.len();
     let mut t = Tally {
         errors: vec![Vec::new(); planes],
+        checks: (planes, rotor.y0.len()),
         ..Tally::default()
     };
     for _ in 0..REALISATIONS {
@@ -106,6 +143,7 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
             &session(conv, speeds, &rotor.trial, &y, s.as_deref()),
             &options,
         );
+        let mut held = 0;
         for j in 0..planes {
             let (z, cov) = estimate(&sol, j);
             let d = z - rotor.correction(conv, j);
@@ -114,101 +152,109 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
             let inside = cov
                 .try_inverse()
                 .is_some_and(|inv| (v.transpose() * inv * v)[0] <= CHI2_2_95);
-            t.ellipse.0 += usize::from(inside);
-            t.ellipse.1 += 1;
+            held += usize::from(inside);
             let plane = format!("P{j}");
-            let warned = sol
-                .warnings
-                .iter()
-                .any(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(&plane));
-            if !warned {
-                t.trusted.0 += usize::from(inside);
-                t.trusted.1 += 1;
-            }
+            t.flagged += usize::from(
+                sol.warnings
+                    .iter()
+                    .any(|w| w.code == "trial_effect_small" && w.plane.as_deref() == Some(&plane)),
+            );
         }
+        t.ellipse.push(held as f64 / planes as f64);
         let fitted = DVector::from_fn(planes, |j, _| {
             let c = &sol.corrections[j];
             weight_in(conv, c.mass_g, c.angle_deg)
         });
         let actual = &rotor.y0 + &rotor.w * fitted;
-        for (a, r) in sol.predicted_residual.iter().enumerate() {
-            t.amplitude.0 += usize::from(actual[a].norm() <= r.amplitude_95.unwrap());
-            t.amplitude.1 += 1;
-        }
+        let rows = sol.predicted_residual.len();
+        let below = sol
+            .predicted_residual
+            .iter()
+            .enumerate()
+            .filter(|(a, r)| actual[*a].norm() <= r.amplitude_95.unwrap())
+            .count();
+        t.amplitude.push(below as f64 / rows as f64);
     }
     t
 }
 
-/// Mean error of each plane's correction in units of its spread.
-fn bias_in_sd(t: &Tally) -> Vec<f64> {
+/// Per plane: Hotelling's `T²` of the mean error, and the bias in sd it
+/// shows, `√(m̄ᵀ S⁻¹ m̄ / 2)` (module doc).
+fn bias_t2(t: &Tally) -> Vec<(f64, f64)> {
     t.errors
         .iter()
         .map(|e| {
             let n = e.len() as f64;
             let mean = e.iter().sum::<Complex64>() / n;
-            let var = e.iter().map(|d| (d - mean).norm_sqr()).sum::<f64>() / (n - 1.0);
-            mean.norm() / var.sqrt()
+            let mut s = Matrix2::zeros();
+            for d in e {
+                let v = Vector2::new(d.re - mean.re, d.im - mean.im);
+                s += v * v.transpose() / (n - 1.0);
+            }
+            let m = Vector2::new(mean.re, mean.im);
+            let q = (m.transpose() * s.try_inverse().expect("errors scatter") * m)[0];
+            (n * q, (q / 2.0).sqrt())
         })
         .collect()
 }
 
 fn calibration(samples: bool, seed: u64) {
-    let mut pooled = Tally::default();
     let mut failures = Vec::new();
+    let mut pooled = [(0.0, 0.0); 2];
     let convs = [LAG_AGAINST, LEAD_WITH, LEAD_AGAINST, LAG_WITH];
-    for (case, (speeds, effect)) in [&ONE_SPEED[..], &TEN_SPEEDS[..]]
+    let cases: Vec<(&[f64], f64)> = [&ONE_SPEED[..], &TEN_SPEEDS[..]]
         .into_iter()
         .flat_map(|s| [0.1, 0.2, 0.3, 1.0].map(|e| (s, e)))
-        .enumerate()
-    {
+        .collect();
+    for (case, &(speeds, effect)) in cases.iter().enumerate() {
         let conv = convs[case % convs.len()];
         let t = run(speeds, effect, conv, samples, seed + case as u64);
-        let e = window(t.ellipse.0, t.ellipse.1, 3.0);
-        let u = window(t.trusted.0, t.trusted.1.max(1), 3.0);
-        let a = window(t.amplitude.0, t.amplitude.1, 3.0);
-        let flagged = 1.0 - t.trusted.1 as f64 / t.ellipse.1 as f64;
-        let bias = bias_in_sd(&t);
-        eprintln!(
-            "{} speed(s), trial {:.0} %: ellipse {:.3}, unflagged {:.3} ({:.0} % flagged), amplitude_95 {:.3}, bias/sd {:.3?}",
+        let e = coverage(&t.ellipse, t.checks.0);
+        let a = coverage(&t.amplitude, t.checks.1);
+        let bias = bias_t2(&t);
+        let t2: f64 = bias.iter().map(|b| b.0).sum();
+        let what = format!(
+            "{} {} speed(s), trial {:.0} %, {conv:?}",
+            if samples { "samples" } else { "stated" },
             speeds.len(),
-            effect * 100.0,
-            e.0,
-            u.0,
-            flagged * 100.0,
-            a.0,
-            bias
+            effect * 100.0
         );
-        let what = format!("{} speeds, trial {effect}", speeds.len());
-        // amplitude_95 holds everywhere.
-        if !(a.1..=a.2).contains(&a.0) {
-            failures.push(format!("{what}: amplitude {a:?}"));
+        eprintln!(
+            "{what}: ellipse {:.3} ± {:.3}, amplitude_95 {:.3} ± {:.3}, bias/sd {:.3?} (T² {t2:.1}), {:.0} % flagged",
+            e.0,
+            e.1,
+            a.0,
+            a.1,
+            bias.iter().map(|b| b.1).collect::<Vec<_>>(),
+            100.0 * t.flagged as f64 / (t.ellipse.len() * t.checks.0) as f64,
+        );
+        if !in_window(e) {
+            failures.push(format!("{what}: ellipse {e:?}"));
         }
-        // Where the warning stays silent the ellipses hold (with enough
-        // unflagged checks to tell) ...
-        if t.trusted.1 >= 200 && !(u.1..=u.2).contains(&u.0) {
-            failures.push(format!("{what}: unflagged ellipse {u:?}"));
+        if !in_window(a) {
+            failures.push(format!("{what}: amplitude_95 {a:?}"));
         }
-        // ... and a case whose ellipses do not hold is flagged, mostly.
-        if !(e.1..=e.2).contains(&e.0) && flagged < 0.5 {
-            failures.push(format!("{what}: ellipse {e:?}, flagged {flagged}"));
+        // Where the answer itself says the trial is too small to trust (most
+        // planes carry `trial_effect_small`: one speed, 10 % trials, where a
+        // plane's estimate scatters by more than its own size), the mean of a
+        // ratio-like estimate is dominated by its tails; the regions must
+        // still hold there, the mean is asserted where the answer is trusted.
+        let trusted = t.flagged * 2 < t.ellipse.len() * t.checks.0;
+        if trusted && t2 > BIAS_T2_LIMIT {
+            failures.push(format!("{what}: mean error T² {t2:.1} > {BIAS_T2_LIMIT}"));
         }
-        // Unbiased where trusted.
-        if flagged < 0.5 && bias.iter().any(|&b| b > 0.1) {
-            failures.push(format!("{what}: mean error {bias:?} sd"));
+        for (sum, x) in pooled.iter_mut().zip([e, a]) {
+            sum.0 += x.0 / cases.len() as f64;
+            sum.1 += (x.1 / cases.len() as f64).powi(2);
         }
-        pooled.trusted.0 += t.trusted.0;
-        pooled.trusted.1 += t.trusted.1;
-        pooled.amplitude.0 += t.amplitude.0;
-        pooled.amplitude.1 += t.amplitude.1;
     }
-    let e = window(pooled.trusted.0, pooled.trusted.1, 0.0);
-    let a = window(pooled.amplitude.0, pooled.amplitude.1, 0.0);
+    let pooled = pooled.map(|(p, v)| (p, v.sqrt()));
     eprintln!(
-        "pooled: unflagged ellipse {:.4}, amplitude_95 {:.4}",
-        e.0, a.0
+        "pooled: ellipse {:.4}, amplitude_95 {:.4}",
+        pooled[0].0, pooled[1].0
     );
-    if !(0.93..=0.97).contains(&e.0) || !(0.93..=0.97).contains(&a.0) {
-        failures.push(format!("pooled: unflagged ellipse {e:?}, amplitude {a:?}"));
+    if !pooled.iter().all(|&x| in_window(x)) {
+        failures.push(format!("pooled: ellipse, amplitude {pooled:?}"));
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
@@ -224,9 +270,9 @@ fn with_a_well_sized_trial_at_one_speed_the_mean_correction_is_within_a_tenth_of
     // Plain least squares is 0.13–0.2 sd off here (errors in variables);
     // with the noise stated the solve removes that bias (uncertainty::bias).
     let t = run(&ONE_SPEED, 1.0, LAG_AGAINST, false, 7);
-    let bias = bias_in_sd(&t);
-    eprintln!("bias/sd {bias:?}");
-    assert!(bias.iter().all(|&b| b < 0.1), "{bias:?}");
+    let bias = bias_t2(&t);
+    eprintln!("T², bias/sd {bias:?}");
+    assert!(bias.iter().all(|&(_, b)| b < 0.1), "{bias:?}");
 }
 
 #[test]

@@ -245,3 +245,39 @@ fn min_max_and_binding_mass_bounds_say_their_intervals_are_approximate() {
         .iter()
         .all(|w| w.code != "uncertainty_approximate"));
 }
+
+#[test]
+fn a_trial_too_small_for_its_noise_says_how_much_to_enlarge_it_and_that_much_is_enough() {
+    let mut rotor = Rotor::two_plane(0.05);
+    let noise = options(2.0, 2.0);
+    let s = session(LAG_AGAINST, &rotor.trial, &rotor.readings(), None);
+    let small = solve(&s, &noise);
+    let factor = |text: &str| -> f64 {
+        let (before, _) = text
+            .split_once(" times the trial mass")
+            .unwrap_or_else(|| panic!("no enlargement in: {text}"));
+        before.rsplit(' ').next().unwrap().parse().unwrap()
+    };
+    let mut told = Vec::new();
+    for (j, t) in rotor.trial.iter_mut().enumerate() {
+        let w = warnings(&small, "trial_effect_small", &format!("P{j}"));
+        let said = w
+            .iter()
+            .find(|m| m.contains(" times the trial mass"))
+            .unwrap_or_else(|| panic!("P{j}: {:?}", small.warnings));
+        let f = factor(said);
+        assert!(f > 1.0, "{said}");
+        told.push(f);
+        // The stated factor, with a margin for its one-decimal rounding.
+        *t *= f * 1.1;
+    }
+    let enlarged = session(LAG_AGAINST, &rotor.trial, &rotor.readings(), None);
+    let sol = solve(&enlarged, &noise);
+    for j in 0..rotor.trial.len() {
+        let w = warnings(&sol, "trial_effect_small", &format!("P{j}"));
+        assert!(
+            w.iter().all(|m| !m.contains("times the trial mass")),
+            "told {told:?}, still: {w:?}"
+        );
+    }
+}

@@ -120,15 +120,21 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let (a, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
     let undetermined = undetermined_planes(&a);
     let kappas = super::kappa(fit, &prop);
-    for ((((corr, &c), cc), &lost), &k) in solution
+    // Covariances estimated from samples: Hotelling's quantile for their
+    // degrees of freedom (`dof`, method 8.5).
+    let prior = noise_options(options).map_or(true, |n| n.amplitude_pct > 0.0 || n.phase_deg > 0.0);
+    let dofs = super::dof::degrees_of_freedom(fit, cov, prior);
+    for (((((corr, &c), cc), &lost), &k), &nu) in solution
         .corrections
         .iter_mut()
         .zip(fit.c.iter())
         .zip(&prop.correction)
         .zip(&undetermined)
         .zip(&kappas)
+        .zip(&dofs)
     {
-        let mut u = correction_uncertainty(c, &super::second_order(cc, k), conv);
+        let widened = super::second_order(cc, k) * super::dof::widening(nu);
+        let mut u = correction_uncertainty(c, &widened, conv);
         if lost {
             // Any mass fits the readings as well along the undetermined
             // combination: no interval can be given (issue 12).

@@ -11,9 +11,10 @@
 //! the noise (amplitude and phase repeatability differ).
 //!
 //! The estimator: the correction minus its second-order bias, evaluated at the
-//! estimate (the analytic bias correction of Cox & Snell 1968, "A general
-//! definition of residuals", JRSS B 30, §5; the same expansion as the
-//! small-disturbance bias of Nagar 1959). Expanding the normal equations
+//! corrected estimate itself (the fixed point of [`debiased`], method 8.3;
+//! the analytic bias correction of Cox & Snell 1968, "A general definition of
+//! residuals", JRSS B 30, §5; the same expansion as the small-disturbance bias
+//! of Nagar 1959). Expanding the normal equations
 //! `Aᴴ(A C + b) = 0` with `A = A₀ + E`, `b = b₀ + e` to second order:
 //!
 //! `E[Ĉ − C] = −H⁻¹ { Σ_i (1 − P_ii) E[E_iᴴ u_i] − A₀ᴴ diag(d) r₀ − X₁ − X₂ }`
@@ -51,6 +52,11 @@ use crate::balancing::validate::Checked;
 /// Relative singular value of `A` below which the fit is treated as rank
 /// deficient and left as the minimum-norm least-squares answer.
 const RANK_TOLERANCE: f64 = 1e-10;
+/// Iterations towards the fixed point after the first correction.
+const FIXED_POINT_STEPS: usize = 4;
+/// A step must shrink by this factor for the iteration to go on: beyond it the
+/// noise is too large beside the signal for the fixed point to exist (`κ ≳ 1`).
+const CONTRACTION: f64 = 0.7;
 
 /// The second-order bias `E[Ĉ − C]` of the least-squares correction `c`
 /// (same arguments as [`super::propagate`]), or `None` when the weighted
@@ -158,8 +164,30 @@ pub fn debiased(
     if !least_squares || bounded || !(stated || measured) {
         return c;
     }
-    match bias(&checked.t, &checked.y, cov, rows, weights, planes, &c) {
-        Some(b) if b.iter().all(|z| z.re.is_finite() && z.im.is_finite()) => c - b,
-        _ => c,
+    let bias_at = |at: &DVector<Complex64>| {
+        bias(&checked.t, &checked.y, cov, rows, weights, planes, at)
+            .filter(|b| b.iter().all(|z| z.re.is_finite() && z.im.is_finite()))
+    };
+    let Some(first) = bias_at(&c) else {
+        return c;
+    };
+    // The bias is evaluated at an estimate that is itself attenuated, which
+    // leaves `O(δ²)` of it (δ the attenuation, `κ/(1+κ)` over many rows): the
+    // estimate is the fixed point `C* = Ĉ − b(C*)` (method 8.3; Fuller 1987 §2.2's
+    // corrected estimator in the many-row limit), found by iterating while
+    // the steps shrink; where they do not, the one-step correction stays.
+    let mut est = &c - &first;
+    let mut step = first.norm();
+    for _ in 0..FIXED_POINT_STEPS {
+        let Some(b) = bias_at(&est) else { break };
+        let next = &c - b;
+        let moved = (&next - &est).norm();
+        // NaN compares false: it stops the iteration too.
+        if moved.partial_cmp(&(CONTRACTION * step)) != Some(std::cmp::Ordering::Less) {
+            break;
+        }
+        est = next;
+        step = moved;
     }
+    est
 }

@@ -44,6 +44,10 @@ pub struct Propagation {
     /// `τ_j = max_k |T_jk|` is the plane's largest trial mass. With one trial per
     /// plane (`T` diagonal) `E_aj` is exactly the change `Y_aj − Y_a0` of method 2.
     pub effect_sd: DMatrix<f64>,
+    /// `[(AᴴA)⁻¹]_jj` per used plane from the same thin SVD of `A = G W`, or
+    /// `None` when `A` is rank deficient (a singular value at or below the
+    /// rank tolerance): what `trust::kappa` needs, without a second SVD (issue 15).
+    pub gram_inv_diag: Option<Vec<f64>>,
 }
 
 /// `(A⁺, (AᴴA)⁺)` from the SVD of `A`, never forming `AᴴA` itself; the thin
@@ -141,7 +145,11 @@ pub fn propagate(
         y[(used_rows[i], 0)] * row_weights[i]
     });
     let r = &amat * c + b;
-    let (apinv, gram_inv) = svd_parts(&amat);
+    let svd = ThinSvd::of(&amat);
+    let tol = RANK_TOLERANCE * svd.max();
+    let (apinv, gram_inv) = svd.pinv_and_gram_inv(tol);
+    let full_rank = svd.singular_values.len() == q && svd.singular_values.iter().all(|&s| s > tol);
+    let gram_inv_diag = full_rank.then(|| (0..q).map(|j| gram_inv[(j, j)].re).collect());
     let mut position = vec![None; n];
     for (i, &a) in used_rows.iter().enumerate() {
         position[a] = Some(i);
@@ -312,5 +320,6 @@ pub fn propagate(
         residual,
         prediction,
         effect_sd,
+        gram_inv_diag,
     }
 }

@@ -26,7 +26,7 @@ use nalgebra::Matrix2;
 
 use super::Propagation;
 use crate::balancing::solution::{Solution, Warning};
-use crate::balancing::solve::{weighted_problem, Fit};
+use crate::balancing::solve::Fit;
 
 /// Largest `κ` (noise over signal energy of a plane's influence coefficients)
 /// at which the first-order 95 % figures are still calibrated (module doc).
@@ -52,23 +52,14 @@ pub fn second_order(cov: &Matrix2<f64>, kappa: Option<f64>) -> Matrix2<f64> {
 pub fn kappa(fit: &Fit, prop: &Propagation) -> Vec<Option<f64>> {
     let checked = &fit.checked;
     let sel = &fit.selection;
-    let (a, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
-    let q = fit.planes.len();
-    let svd = a.svd(false, true);
-    let Some(v_t) = svd.v_t else {
-        return vec![None; q];
+    // `[(AᴴA)⁻¹]_jj` from the propagation's thin SVD of `A` (issue 15).
+    let Some(inv) = &prop.gram_inv_diag else {
+        return vec![None; fit.planes.len()];
     };
-    let smax = svd.singular_values.max();
-    (0..q)
-        .map(|j| {
-            let mut inv = 0.0;
-            for (i, &s) in svd.singular_values.iter().enumerate() {
-                if s <= 1e-10 * smax {
-                    return None;
-                }
-                inv += v_t[(i, j)].norm_sqr() / (s * s);
-            }
-            let plane = fit.planes[j];
+    fit.planes
+        .iter()
+        .zip(inv)
+        .map(|(&plane, &inv)| {
             let tau = (0..checked.t.ncols())
                 .map(|k| checked.t[(plane, k)].norm())
                 .fold(0.0, f64::max);

@@ -74,7 +74,10 @@ export function planePictures(sol) {
   const direction = (sol.conventions || state.setup.conventions).angle_direction;
   return h("div", { class: "plane-pics" }, sol.corrections.map((c) => {
     const plane = state.setup.planes.find((p) => p.id === c.plane) || { id: c.plane };
-    return planePicture(plane, sol, c, direction);
+    const fig = planePicture(plane, sol, c, direction);
+    // A weight not to be trusted as it stands is greyed here too, not drawn as sure.
+    if (doubt(sol, c)) fig.classList.add("doubtful");
+    return fig;
   }));
 }
 

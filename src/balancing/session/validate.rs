@@ -12,7 +12,7 @@ use num_complex::Complex64;
 
 use crate::balancing::error::InputError;
 use crate::balancing::limits::{check_session, too_large, Limits};
-use crate::balancing::model::{Conventions, Reading, Session};
+use crate::balancing::model::{Conventions, Reading, Rotor, Session};
 use crate::balancing::phasor::{reading_in, weight_in};
 
 /// Speeds closer than this (relative) are the same speed point (contract).
@@ -220,36 +220,42 @@ fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
     best.map(|(q, _)| q)
 }
 
+/// The rotor data of a session or a machine (ISO 21940-11 inputs).
+pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
+    check_positive(
+        || "rotor.mass_kg".into(),
+        r.mass_kg,
+        1e7,
+        false,
+        "the rotor mass",
+    )?;
+    check_positive(
+        || "rotor.service_speed_rpm".into(),
+        r.service_speed_rpm,
+        MAX_SPEED_RPM,
+        false,
+        "the service speed",
+    )?;
+    if !GRADES.contains(&r.balance_grade.as_str()) {
+        return Err(invalid(
+            "rotor.balance_grade",
+            format!(
+                "'{}' is not an ISO 21940-11 grade; use one of {}",
+                r.balance_grade,
+                GRADES.join(", ")
+            ),
+        ));
+    }
+    Ok(())
+}
+
 fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputError> {
     check_text("name", &session.name, true)?;
     if let Some(m) = &session.machine {
         check_text("machine", m, false)?;
     }
     if let Some(r) = &session.rotor {
-        check_positive(
-            || "rotor.mass_kg".into(),
-            r.mass_kg,
-            1e7,
-            false,
-            "the rotor mass",
-        )?;
-        check_positive(
-            || "rotor.service_speed_rpm".into(),
-            r.service_speed_rpm,
-            MAX_SPEED_RPM,
-            false,
-            "the service speed",
-        )?;
-        if !GRADES.contains(&r.balance_grade.as_str()) {
-            return Err(invalid(
-                "rotor.balance_grade",
-                format!(
-                    "'{}' is not an ISO 21940-11 grade; use one of {}",
-                    r.balance_grade,
-                    GRADES.join(", ")
-                ),
-            ));
-        }
+        check_rotor(r)?;
     }
     if session.planes.is_empty() {
         return Err(invalid("planes", "at least one correction plane is needed"));

@@ -23,10 +23,6 @@ use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
 use crate::http::AppState;
 
-const GRADES: [&str; 11] = [
-    "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
-];
-
 fn invalid(field: &str, message: impl Into<String>) -> InputError {
     InputError::invalid("invalid_value", field, message)
 }
@@ -47,31 +43,7 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
         return Err(invalid("notes", "at most 10000 characters"));
     }
     if let Some(r) = &m.rotor {
-        if !(r.mass_kg.is_finite() && r.mass_kg > 0.0 && r.mass_kg <= 1e7) {
-            return Err(invalid(
-                "rotor.mass_kg",
-                "the rotor mass must be a finite number from above 0 to 1e7",
-            ));
-        }
-        if !(r.service_speed_rpm.is_finite()
-            && r.service_speed_rpm > 0.0
-            && r.service_speed_rpm <= 1e6)
-        {
-            return Err(invalid(
-                "rotor.service_speed_rpm",
-                "the service speed must be a finite number from above 0 to 1e6",
-            ));
-        }
-        if !GRADES.contains(&r.balance_grade.as_str()) {
-            return Err(invalid(
-                "rotor.balance_grade",
-                format!(
-                    "'{}' is not an ISO 21940-11 grade; use one of {}",
-                    r.balance_grade,
-                    GRADES.join(", ")
-                ),
-            ));
-        }
+        crate::balancing::validate::check_rotor(r)?;
     }
     Ok(())
 }

@@ -5,7 +5,7 @@
 //! of the trial weights), which `influence` checks when solving, because a stored
 //! session may still be waiting for its trial runs.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 
 use nalgebra::DMatrix;
 use num_complex::Complex64;
@@ -33,6 +33,33 @@ pub const GRADES: [&str; 11] = [
 
 /// Position of each id in its list.
 type IdIndex<'s> = HashMap<&'s str, usize>;
+
+/// The pairing map's hasher (issue 15): its keys are (speed point, sensor)
+/// index pairs, bounded by the limits and never chosen by a client, so the
+/// multiplicative mix rustc uses (Fx) is safe here and a fraction of the cost
+/// of SipHash, which was a tenth of a large solve. Ids stay on SipHash.
+#[derive(Default, Clone, Copy)]
+struct PairHasher(u64);
+
+impl std::hash::Hasher for PairHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+    fn write_u64(&mut self, n: u64) {
+        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_usize(&mut self, n: usize) {
+        self.write_u64(n as u64);
+    }
+}
+
+/// (speed point, sensor) → index of the reading in one run.
+type Pairs = HashMap<(usize, usize), usize, std::hash::BuildHasherDefault<PairHasher>>;
 
 /// One (speed point, sensor) pair measured in the reference run.
 #[derive(Debug, Clone, PartialEq)]
@@ -293,10 +320,15 @@ fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputErr
     Ok((planes, sensors))
 }
 
+/// Check one reading and find its sensor; `hint` is the sensor index to try
+/// first (readings usually list the sensors in order, and comparing one id is
+/// far cheaper than hashing it: issue 15).
 fn check_reading(
     f: &dyn Fn() -> String,
     r: &Reading,
     sensors: &HashMap<&str, usize>,
+    ids: &[crate::balancing::model::Sensor],
+    hint: usize,
 ) -> Result<usize, InputError> {
     check_positive(
         || format!("{}.speed_rpm", f()),
@@ -305,13 +337,17 @@ fn check_reading(
         false,
         "the speed",
     )?;
-    let sensor = *sensors.get(r.sensor.as_str()).ok_or_else(|| {
-        InputError::invalid(
-            "unknown_sensor",
-            format!("{}.sensor", f()),
-            format!("no sensor has the id '{}'", r.sensor),
-        )
-    })?;
+    let sensor = match ids.get(hint) {
+        // Ids are unique (checked before), so a match is the one the map gives.
+        Some(s) if s.id == r.sensor => hint,
+        _ => *sensors.get(r.sensor.as_str()).ok_or_else(|| {
+            InputError::invalid(
+                "unknown_sensor",
+                format!("{}.sensor", f()),
+                format!("no sensor has the id '{}'", r.sensor),
+            )
+        })?,
+    };
     check_amplitude(|| format!("{}.amplitude", f()), r.amplitude)?;
     check_angle(|| format!("{}.phase_deg", f()), r.phase_deg)?;
     if let Some(samples) = &r.samples {
@@ -362,12 +398,14 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
             )?;
             check_angle(|| format!("{}.angle_deg", f()), w.angle_deg)?;
         }
-        let s = run
-            .readings
-            .iter()
-            .enumerate()
-            .map(|(j, r)| check_reading(&|| format!("runs[{i}].readings[{j}]"), r, &sensors))
-            .collect::<Result<Vec<_>, _>>()?;
+        let mut s = Vec::with_capacity(run.readings.len());
+        let mut hint = 0;
+        for (j, r) in run.readings.iter().enumerate() {
+            let f = || format!("runs[{i}].readings[{j}]");
+            let sensor = check_reading(&f, r, &sensors, &session.sensors, hint)?;
+            hint = sensor + 1;
+            s.push(sensor);
+        }
         sensor_of.push(s);
         if run.weights.is_empty() {
             if let Some(first) = reference {
@@ -411,14 +449,22 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     // is rejected, so a speed 1 % from another sensor's is never paired with a
     // reading 2 % away.
     let mut span: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[p.len() - 1])).collect();
-    let mut paired: Vec<HashMap<(usize, usize), usize>> = Vec::with_capacity(runs.len());
+    let mut paired: Vec<Pairs> = Vec::with_capacity(runs.len());
     for &i in &runs {
-        let mut map = HashMap::new();
+        let mut map =
+            Pairs::with_capacity_and_hasher(session.runs[i].readings.len(), Default::default());
+        // The point of the previous reading's speed: the sensors of one speed
+        // usually follow each other, and the search is a function of the speed.
+        let mut last: Option<(f64, usize)> = None;
         for (j, r) in session.runs[i].readings.iter().enumerate() {
             let f = || format!("runs[{i}].readings[{j}]");
-            let point = nearest_point(&points, r.speed_rpm).ok_or_else(|| {
-                InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
-            })?;
+            let point = match last {
+                Some((speed, p)) if speed == r.speed_rpm => p,
+                _ => nearest_point(&points, r.speed_rpm).ok_or_else(|| {
+                    InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
+                })?,
+            };
+            last = Some((r.speed_rpm, point));
             let (lo, hi) = span[point];
             let (lo, hi) = (lo.min(r.speed_rpm), hi.max(r.speed_rpm));
             if hi > lo * (1.0 + SPEED_TOLERANCE) * (1.0 + 1e-12) {
@@ -465,8 +511,11 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
         });
     }
     for (k, &i) in runs.iter().enumerate().skip(1) {
-        let used: HashSet<usize> = rows.iter().map(|r| r.readings[k]).collect();
-        if let Some(j) = (0..session.runs[i].readings.len()).find(|j| !used.contains(j)) {
+        let mut used = vec![false; session.runs[i].readings.len()];
+        for r in &rows {
+            used[r.readings[k]] = true;
+        }
+        if let Some(j) = used.iter().position(|&u| !u) {
             return Err(InputError::invalid(
                 "unpaired_reading",
                 format!("runs[{i}].readings[{j}]"),

@@ -70,10 +70,15 @@ pub fn reading_covariance(
     let a = y.norm();
     let sr = amplitude_noise_pct / 100.0 * a;
     let st = a * phase_noise_deg.to_radians();
-    let (s, c) = y.arg().sin_cos();
-    // R diag(sr², st²) Rᵀ with R the rotation by arg y.
-    let rot = Matrix2::new(c, -s, s, c);
-    rot * Matrix2::new(sr * sr, 0.0, 0.0, st * st) * rot.transpose()
+    if a == 0.0 {
+        return Matrix2::zeros();
+    }
+    // R diag(sr², st²) Rᵀ with R the rotation by arg y, whose cosine and sine
+    // are y/|y| (no atan2 and sin_cos per reading: issue 15).
+    let (c, s) = (y.re / a, y.im / a);
+    let (r2, t2) = (sr * sr, st * st);
+    let off = c * s * (r2 - t2);
+    Matrix2::new(c * c * r2 + s * s * t2, off, off, s * s * r2 + c * c * t2)
 }
 
 /// Covariance of the mean of repeated readings (internal phasors): the

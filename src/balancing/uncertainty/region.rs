@@ -11,6 +11,9 @@ use crate::balancing::solution::Uncertainty;
 
 /// 95 % quantile of χ² with 2 degrees of freedom, `−2 ln 0.05`.
 pub const CHI2_2_95: f64 = 5.991_464_547_107_979;
+/// Beyond this many standard deviations a normal tail is below 1e-17: `normal_cdf`
+/// returns exactly 1 from 8.3 on.
+const TAIL: f64 = 8.5;
 /// Samples of the ellipse boundary before refining an extreme of mass or angle.
 const COARSE_POINTS: usize = 24;
 
@@ -216,6 +219,16 @@ fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> [f64; 2] {
         let weight = (-0.5 * z * z).exp() * norm / s1;
         if s2 > 0.0 {
             let (a, b) = ((h - mu2) / s2, (-h - mu2) / s2);
+            // Both ends beyond 8.5σ₂ (a ≥ b as h ≥ 0): Φ(a) − Φ(b) is exactly 1
+            // or 0 in floating point (Φ(x) = 1.0 from x ≥ 8.3, Φ(−8.5) ≈ 1e-17
+            // vanishes beside 1) and the density terms are below 1e-15 of
+            // their peak; four exponentials saved (issue 15).
+            if b >= TAIL || a <= -TAIL {
+                return [0.0, 0.0];
+            }
+            if a >= TAIL && b <= -TAIL {
+                return [weight * h, 0.0];
+            }
             let p = normal_cdf(a) - normal_cdf(b);
             let dp = ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * norm / s2 * rho;
             [p * weight * h, dp * weight]
@@ -257,14 +270,15 @@ fn rule(h: f64, fa: Pair, fm: Pair, fb: Pair) -> Pair {
     ]
 }
 
-/// Adaptive Simpson quadrature of a pair of integrands, refined on the first.
-fn simpson(f: &dyn Fn(f64) -> Pair, a: f64, b: f64, tol: f64, depth: u32) -> Pair {
+/// Adaptive Simpson quadrature of a pair of integrands, refined on the first
+/// (generic over the integrand so that it inlines: issue 15).
+fn simpson<F: Fn(f64) -> Pair>(f: &F, a: f64, b: f64, tol: f64, depth: u32) -> Pair {
     let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
     refine(f, a, b, [fa, fm, fb], rule(b - a, fa, fm, fb), tol, depth)
 }
 
-fn refine(
-    f: &dyn Fn(f64) -> Pair,
+fn refine<F: Fn(f64) -> Pair>(
+    f: &F,
     a: f64,
     b: f64,
     fs: [Pair; 3],

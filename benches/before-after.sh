@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 root=$PWD
 out=$(mktemp -d)
 executables() { # crate dir → "solve-path conic-path" from cargo's --no-run output
-    (cd "$1" && CARGO_TARGET_DIR="$root/target" cargo bench --no-run --bench solve --bench conic 2>&1) |
+    (cd "$1" && CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$root/target}" cargo bench --no-run --bench solve --bench conic 2>&1) |
         sed -n 's/.*Executable benches\/\(solve\|conic\)\.rs (\(.*\))/\1 \2/p'
 }
 if [ -z "${OLD_SOLVE:-}" ]; then

@@ -4,6 +4,8 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
+use crate::balancing::factor::Factored;
+
 /// Below this significance factor a plane counts as dependent (Darlow).
 pub const SIGNIFICANCE_THRESHOLD: f64 = 0.2;
 /// Field practice: a trial should change some reading by at least 30 % (method §4).
@@ -63,27 +65,25 @@ pub const UNDETERMINED_TOLERANCE: f64 = 1e-9;
 /// sensors see identically, of which only a combination is determined).
 /// Found from the right singular vectors of the column-scaled `a`.
 pub fn undetermined_planes(a: &DMatrix<Complex64>) -> Vec<bool> {
-    let q = a.ncols();
-    let mut s = a.clone();
-    let mut out = vec![false; q];
-    for (j, mut col) in s.column_iter_mut().enumerate() {
-        let norm = col.norm();
-        if norm > 0.0 {
-            col /= Complex64::from(norm);
-        } else {
-            out[j] = true;
-        }
-    }
-    if a.nrows() < q {
+    undetermined(&Factored::of(a))
+}
+
+/// [`undetermined_planes`] of the factored `A` (issue 15: from `R`, `A = Q R`).
+pub fn undetermined(f: &Factored) -> Vec<bool> {
+    let r = f.small();
+    let q = r.ncols();
+    if f.nrows() < q {
         return vec![true; q];
     }
-    // Through the QR of a tall matrix (`factor::right_svd`, issue 15).
-    let (singular_values, v_t) = crate::balancing::factor::right_svd(&s);
-    let smax = singular_values.max();
-    for (i, &sv) in singular_values.iter().enumerate() {
-        if sv <= UNDETERMINED_TOLERANCE * smax {
-            for (j, flag) in out.iter_mut().enumerate() {
-                *flag |= v_t[(i, j)].norm() > 1e-6;
+    // A zero column of `A` is a zero column of `R` (reflections of a zero vector).
+    let mut out: Vec<bool> = r.column_iter().map(|c| c.norm() == 0.0).collect();
+    if let Some((singular_values, v_t)) = f.scaled_null(UNDETERMINED_TOLERANCE) {
+        let smax = singular_values.max();
+        for (i, &sv) in singular_values.iter().enumerate() {
+            if sv <= UNDETERMINED_TOLERANCE * smax {
+                for (j, flag) in out.iter_mut().enumerate() {
+                    *flag |= v_t[(i, j)].norm() > 1e-6;
+                }
             }
         }
     }
@@ -92,19 +92,7 @@ pub fn undetermined_planes(a: &DMatrix<Complex64>) -> Vec<bool> {
 
 /// `cond(A)` after scaling the columns to unit norm: σ_max/σ_min, capped at 1e16.
 pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
-    let mut s = a.clone();
-    for mut col in s.column_iter_mut() {
-        let norm = col.norm();
-        if norm > 0.0 {
-            col /= Complex64::from(norm);
-        }
-    }
-    let sv = crate::balancing::factor::singular_values(&s);
-    let (max, min) = (sv.max(), sv.min());
-    if max == 0.0 {
-        return 1e16;
-    }
-    (max / min.max(max * 1e-16)).min(1e16)
+    Factored::of(a).condition_number()
 }
 
 /// Largest change a plane's trial weight made at any of `rows`, relative to the
@@ -119,8 +107,9 @@ pub fn trial_effect_ratio(
 ) -> f64 {
     let trial = t.row(j).iter().map(|x| x.norm()).fold(0.0, f64::max);
     rows.iter()
-        .filter(|&&a| y0[a].norm() > 0.0)
-        .map(|&a| w[(a, j)].norm() * trial / y0[a].norm())
+        .map(|&a| (a, y0[a].norm()))
+        .filter(|&(_, y)| y > 0.0)
+        .map(|(a, y)| w[(a, j)].norm() * trial / y)
         .fold(0.0, f64::max)
 }
 

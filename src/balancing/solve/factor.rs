@@ -102,23 +102,145 @@ impl ThinSvd {
     }
 }
 
-/// Singular values and right singular vectors (`Vᴴ`, `k × q`) of `a`, QR
-/// first when tall; no left vectors are formed.
-pub fn right_svd(a: &DMatrix<Complex64>) -> (DVector<f64>, DMatrix<Complex64>) {
-    let small = if a.nrows() > a.ncols() {
-        a.clone().qr().r()
-    } else {
-        a.clone()
-    };
-    let svd = small.svd(false, true);
-    (svd.singular_values, svd.v_t.expect("SVD computed with Vᴴ"))
+/// The weighted matrix `A = G W` of a solve (method 3.3), factored once and
+/// shared by everything the solve asks of it (issue 15): the least-squares
+/// correction, the significance factors, the condition number, the
+/// undetermined planes and the uncertainty propagation each factored the same
+/// `m × q` matrix again.
+///
+/// For a tall `A = Q R` the `q × q` `R` carries everything but the left
+/// vectors: `Q` preserves inner products, so Gram–Schmidt on `R`'s columns
+/// gives the same significance factors, and scaling `A`'s columns to unit
+/// norm is scaling `R`'s (`A D = Q (R D)`), so `cond(A D)` and the right
+/// singular vectors of `A D` come from the small `R D`.
+#[derive(Debug, Clone)]
+pub struct Factored {
+    /// `Q` of `A = Q R` (`m × q`) when `A` has more rows than columns; else `None`, and `r` is `A`.
+    q: Option<DMatrix<Complex64>>,
+    /// `R` (`q × q`, upper triangular), or `A` itself.
+    r: DMatrix<Complex64>,
+    /// The SVD of `r`: its `u` is `U_R`, the left vectors of `A` are `Q U_R`.
+    svd: ThinSvd,
+    /// Singular values of `R D` (columns of `A` at unit norm).
+    scaled: DVector<f64>,
+    /// Rows of `A`.
+    rows: usize,
 }
 
-/// Singular values of `a`, QR first when tall.
-pub fn singular_values(a: &DMatrix<Complex64>) -> DVector<f64> {
-    if a.nrows() > a.ncols() {
-        a.clone().qr().r().singular_values()
-    } else {
-        a.singular_values()
+impl Factored {
+    /// One QR (when tall) and one SVD of the small factor.
+    pub fn of(a: &DMatrix<Complex64>) -> Factored {
+        let (q, r) = if a.nrows() > a.ncols() {
+            let qr = a.clone().qr();
+            (Some(qr.q()), qr.r())
+        } else {
+            (None, a.clone())
+        };
+        let svd = ThinSvd::of(&r);
+        let scaled = if r.is_empty() {
+            DVector::zeros(0)
+        } else {
+            unit_columns(&r).singular_values()
+        };
+        Factored {
+            q,
+            r,
+            svd,
+            scaled,
+            rows: a.nrows(),
+        }
     }
+
+    /// Largest singular value of `A`.
+    pub fn max(&self) -> f64 {
+        self.svd.max()
+    }
+
+    /// Singular values of `A`.
+    pub fn singular_values(&self) -> &DVector<f64> {
+        &self.svd.singular_values
+    }
+
+    /// `Qᴴ c`: `c` in the coordinates of `R` (the identity when not tall).
+    fn project(&self, c: &DVector<Complex64>) -> DVector<Complex64> {
+        match &self.q {
+            Some(q) => q.ad_mul(c),
+            None => c.clone(),
+        }
+    }
+
+    /// `A⁺ c` with singular values at or below `tol` left out.
+    pub fn solve(&self, c: &DVector<Complex64>, tol: f64) -> DVector<Complex64> {
+        self.svd.solve(&self.project(c), tol)
+    }
+
+    /// `(A⁺, (AᴴA)⁺)` as [`ThinSvd::pinv_and_gram_inv`]: `R⁺ Qᴴ` and `(RᴴR)⁺`.
+    pub fn pinv_and_gram_inv(&self, tol: f64) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
+        let (r_pinv, gram_inv) = self.svd.pinv_and_gram_inv(tol);
+        match &self.q {
+            Some(q) => (cmul(q, &r_pinv.adjoint()).adjoint(), gram_inv),
+            None => (r_pinv, gram_inv),
+        }
+    }
+
+    /// `R`'s columns: the Gram matrix of `A`'s (`AᴴA = RᴴR`) in `q` rows.
+    pub fn small(&self) -> &DMatrix<Complex64> {
+        &self.r
+    }
+
+    /// `cond(A D)`, columns at unit norm: σ_max/σ_min, capped at 1e16.
+    pub fn condition_number(&self) -> f64 {
+        let (max, min) = (self.scaled.max(), self.scaled.min());
+        if self.scaled.is_empty() || max == 0.0 {
+            return 1e16;
+        }
+        (max / min.max(max * 1e-16)).min(1e16)
+    }
+
+    /// Rows of `A`.
+    pub fn nrows(&self) -> usize {
+        self.rows
+    }
+
+    /// The SVD of `A D` (columns at unit norm), singular values and `Vᴴ`,
+    /// only when one of its singular values is at or below `tol` times the
+    /// largest (else `None`: no combination of columns is lost).
+    pub fn scaled_null(&self, tol: f64) -> Option<(DVector<f64>, DMatrix<Complex64>)> {
+        let smax = self.scaled.max();
+        if !self.scaled.iter().any(|&s| s <= tol * smax) {
+            return None;
+        }
+        let svd = unit_columns(&self.r).svd(false, true);
+        Some((svd.singular_values, svd.v_t.expect("SVD computed with Vᴴ")))
+    }
+}
+
+/// `a` with every nonzero column scaled to unit norm.
+fn unit_columns(a: &DMatrix<Complex64>) -> DMatrix<Complex64> {
+    let mut s = a.clone();
+    for mut col in s.column_iter_mut() {
+        let norm = col.norm();
+        if norm > 0.0 {
+            col /= Complex64::from(norm);
+        }
+    }
+    s
+}
+
+/// `a b` for complex matrices through four real products (issue 15):
+/// nalgebra multiplies `f64` matrices with the blocked SIMD kernels of
+/// `matrixmultiply` but complex ones with a plain loop, several times slower
+/// on the `rows × planes` products of a large solve. Same sums, rounded in
+/// another order.
+pub fn cmul(a: &DMatrix<Complex64>, b: &DMatrix<Complex64>) -> DMatrix<Complex64> {
+    assert_eq!(a.ncols(), b.nrows(), "cmul: dimensions mismatch");
+    // Small products gain nothing from the split.
+    if a.nrows() * a.ncols() * b.ncols() < 4096 {
+        return a * b;
+    }
+    let (ar, ai) = (a.map(|z| z.re), a.map(|z| z.im));
+    let (br, bi) = (b.map(|z| z.re), b.map(|z| z.im));
+    let re = &ar * &br - &ai * &bi;
+    let im = &ar * &bi + &ai * &br;
+    re.zip_map(&im, Complex64::new)
 }

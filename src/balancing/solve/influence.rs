@@ -23,6 +23,15 @@ pub fn changes(checked: &Checked) -> DMatrix<Complex64> {
 /// The influence matrix `W` (rows × planes, vibration per gram at angle 0 in the
 /// internal frame), or an error saying which planes lack an independent trial.
 pub fn influence_matrix(checked: &Checked) -> Result<DMatrix<Complex64>, InputError> {
+    influence_and_pinv(checked).map(|(w, _)| w)
+}
+
+/// [`influence_matrix`] and the `T⁺` it was formed with (trial runs × planes),
+/// which the uncertainty propagation needs too (issue 15: one SVD of `T`,
+/// a full complex SVD for a square many-plane job).
+pub fn influence_and_pinv(
+    checked: &Checked,
+) -> Result<(DMatrix<Complex64>, DMatrix<Complex64>), InputError> {
     let session = checked.session;
     let t = &checked.t;
     let (planes, trials) = t.shape();
@@ -61,5 +70,8 @@ pub fn influence_matrix(checked: &Checked) -> Result<DMatrix<Complex64>, InputEr
     let t_pinv = svd
         .pseudo_inverse(0.0)
         .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
-    Ok(changes(checked) * t_pinv)
+    Ok((
+        crate::balancing::factor::cmul(&changes(checked), &t_pinv),
+        t_pinv,
+    ))
 }

@@ -1,13 +1,8 @@
 //! From a fit in the internal frame to the contract's solution, in the
 //! session's conventions: corrections, residuals, coefficients, diagnostics.
 
-use std::collections::BTreeSet;
-
-use nalgebra::DMatrix;
-use num_complex::Complex64;
-
 use crate::balancing::diagnostics::{
-    condition_number, trial_effect_ratio, SIGNIFICANCE_THRESHOLD, TRIAL_EFFECT_THRESHOLD,
+    trial_effect_ratio, SIGNIFICANCE_THRESHOLD, TRIAL_EFFECT_THRESHOLD,
 };
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::phasor::{reading_out, weight_out};
@@ -126,8 +121,8 @@ fn iso(fit: &Fit, corrections: &[Correction]) -> Option<IsoTolerance> {
     })
 }
 
-/// The solution for `fit`; `a` is the weighted matrix that was solved.
-pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> Solution {
+/// The solution for `fit`.
+pub fn solution(fit: &Fit, options: &SolveOptions) -> Solution {
     let checked = &fit.checked;
     let session = checked.session;
     let conv = checked.conventions;
@@ -135,7 +130,10 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
     let corrections = corrections(fit, &mut warnings);
     let planes = diagnostics(fit, &mut warnings);
 
-    let used: BTreeSet<usize> = fit.selection.rows.iter().copied().collect();
+    let mut used = vec![false; checked.rows.len()];
+    for &a in &fit.selection.rows {
+        used[a] = true;
+    }
     let predicted_residual = checked
         .rows
         .iter()
@@ -151,7 +149,7 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
                 amplitude,
                 phase_deg,
                 amplitude_95: None,
-                used: used.contains(&a),
+                used: used[a],
             }
         })
         .collect();
@@ -175,11 +173,10 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
     let (rms_before, max_before) = rms_max(rows, |a| checked.y[(a, 0)].norm());
     let (rms_after, max_after) = rms_max(rows, |a| fit.residual[a].norm());
 
-    let units: BTreeSet<String> = rows
-        .iter()
-        .map(|&a| format!("{:?}", session.sensors[checked.rows[a].sensor].unit))
-        .collect();
-    if units.len() > 1 {
+    // One unit or several: compared, not formatted per row (issue 15).
+    let unit_of = |a: usize| session.sensors[checked.rows[a].sensor].unit;
+    let mixed = rows.iter().any(|&a| unit_of(a) != unit_of(rows[0]));
+    if mixed {
         warnings.push(warning(
             "mixed_units",
             None,
@@ -198,7 +195,7 @@ pub fn solution(fit: &Fit, options: &SolveOptions, a: &DMatrix<Complex64>) -> So
             max_before,
             max_after,
         },
-        condition_number: condition_number(a),
+        condition_number: fit.factor.condition_number(),
         warnings,
         conventions: conv,
         objective: options.objective.unwrap_or(Objective::LeastSquares),

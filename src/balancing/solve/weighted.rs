@@ -6,8 +6,8 @@ use num_complex::Complex64;
 
 use crate::balancing::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD};
 use crate::balancing::error::InputError;
-use crate::balancing::factor::ThinSvd;
-use crate::balancing::influence::influence_matrix;
+use crate::balancing::factor::{Factored, ThinSvd};
+use crate::balancing::influence::influence_and_pinv;
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::report;
 use crate::balancing::select::{select, Selection};
@@ -33,6 +33,12 @@ pub struct Fit<'a> {
     pub c: DVector<Complex64>,
     /// Predicted vibration `R = Y0 + W C` (3.1) at every row.
     pub residual: DVector<Complex64>,
+    /// The weighted matrix `G W` of the used rows and `planes`, factored once
+    /// for the diagnostics, the report and the uncertainty (issue 15).
+    pub factor: Factored,
+    /// `T⁺` (trial runs × planes) that `w` was estimated with; `None` for
+    /// supplied coefficients.
+    pub t_pinv: Option<DMatrix<Complex64>>,
 }
 
 /// The weighted problem `min ‖G (Y0 + W C)‖` (3.3) on the used rows and `planes`:
@@ -74,6 +80,7 @@ pub fn least_squares(
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
+    factor: &Factored,
     options: &SolveOptions,
     session: &Session,
     planes: &[usize],
@@ -84,7 +91,8 @@ fn correction(
     {
         return Ok(found);
     }
-    Ok((least_squares(a, b)?, Vec::new()))
+    // `least_squares` through the solve's one factorisation.
+    Ok((factor.solve(&(-b), 1e-13 * factor.max()), Vec::new()))
 }
 
 /// Solve a session: influence coefficients, corrections, predicted residual,
@@ -102,15 +110,21 @@ pub fn solve_checked<'a>(
 ) -> Result<Solution, InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
     let supplied = crate::balancing::job::supplied::resolve(&checked, options)?;
-    let w = match &supplied {
-        Some(s) => s.w.clone(),
-        None => influence_matrix(&checked)?,
+    let (w, t_pinv) = match &supplied {
+        Some(s) => (s.w.clone(), None),
+        None => {
+            let (w, t_pinv) = influence_and_pinv(&checked)?;
+            (w, Some(t_pinv))
+        }
     };
     let selection = select(&checked, options)?;
     let noise = uncertainty::noise_options(options)?;
 
     let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
-    let factors = significance_factors(&a_all);
+    // One QR of `A` for the factors, the solve, the report and the
+    // uncertainty; Gram–Schmidt on `R` is Gram–Schmidt on `A` (issue 15).
+    let factor_all = Factored::of(&a_all);
+    let factors = significance_factors(factor_all.small());
     let drop = options.drop_dependent_planes.unwrap_or(false);
     let (planes, dropped): (Vec<usize>, Vec<usize>) = if drop {
         let keep = |k: &usize| factors[*k] >= SIGNIFICANCE_THRESHOLD;
@@ -146,7 +160,12 @@ pub fn solve_checked<'a>(
     }
 
     let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
-    let (c, warnings) = correction(&a, &b, options, session, &planes)?;
+    let factor = if planes.len() == selection.planes.len() {
+        factor_all
+    } else {
+        Factored::of(&a)
+    };
+    let (c, warnings) = correction(&a, &b, &factor, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);
     // Errors-in-variables bias removed where the noise is evidenced (issue 12).
     let c = match &supplied {
@@ -174,8 +193,10 @@ pub fn solve_checked<'a>(
         dropped,
         c,
         residual,
+        factor,
+        t_pinv,
     };
-    let mut solution = report::solution(&fit, options, &a);
+    let mut solution = report::solution(&fit, options);
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
     match &supplied {

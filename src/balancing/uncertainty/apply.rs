@@ -6,16 +6,15 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 use super::{
-    correction_uncertainty, propagate, reading_noise, remaining_amplitude_95, through_correction,
-    DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT,
-    MAX_PHASE_NOISE_DEG,
+    correction_uncertainty, reading_noise, remaining_amplitude_95, DEFAULT_AMPLITUDE_NOISE_PCT,
+    DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
 };
-use crate::balancing::diagnostics::undetermined_planes;
+use crate::balancing::diagnostics::undetermined;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::phasor::reading_in;
 use crate::balancing::solution::{Solution, Warning};
-use crate::balancing::solve::{weighted_problem, Fit};
+use crate::balancing::solve::Fit;
 use crate::balancing::validate::Checked;
 
 /// A trial effect below this many standard deviations of its noise at every
@@ -107,7 +106,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let checked = &fit.checked;
     let conv = checked.conventions;
     let sel = &fit.selection;
-    let prop = propagate(
+    let prop = super::propagate::propagate_factored(
         &checked.t,
         &checked.y,
         cov,
@@ -115,10 +114,14 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         &sel.weights,
         &fit.planes,
         &fit.c,
+        fit.t_pinv.as_ref().map(|t_pinv| super::propagate::Known {
+            t_pinv,
+            w: &fit.w,
+            factor: &fit.factor,
+        }),
     );
 
-    let (a, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
-    let undetermined = undetermined_planes(&a);
+    let undetermined = undetermined(&fit.factor);
     let kappas = super::kappa(fit, &prop);
     // Covariances estimated from samples: Hotelling's quantile for their
     // degrees of freedom (`dof`, method 8.5).
@@ -158,9 +161,8 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         .zip(fit.residual.iter())
         .enumerate()
     {
-        let w_row: Vec<Complex64> = fit.planes.iter().map(|&j| fit.w[(a, j)]).collect();
-        let through = through_correction(&w_row, &prop.correction_full);
-        res.amplitude_95 = Some(remaining_amplitude_95(r, &prop.prediction[a], &through));
+        let through = &prop.through_correction[a];
+        res.amplitude_95 = Some(remaining_amplitude_95(r, &prop.prediction[a], through));
     }
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {

@@ -11,7 +11,7 @@
 use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 
-use crate::balancing::factor::ThinSvd;
+use crate::balancing::factor::{cmul, Factored, ThinSvd};
 
 /// Singular values below this fraction of the largest count as zero (as in the solver).
 const RANK_TOLERANCE: f64 = 1e-10;
@@ -39,6 +39,12 @@ pub struct Propagation {
     /// square problem (as many rows as planes) `R̂ ≡ 0` and this is 0, which is
     /// why it is not the bound of the residual.
     pub prediction: Vec<Matrix2<f64>>,
+    /// Per row (all rows): covariance of `W_a dC`, the error of the remaining
+    /// vibration that comes through the correction alone: `w K wᴴ`, `w J wᵀ`
+    /// with `K`, `J` of `correction_full`, already formed for `prediction`
+    /// (what `remaining` needs; issue 15 read it from here rather than
+    /// recomputing a `2q × 2q` form per row).
+    pub through_correction: Vec<Matrix2<f64>>,
     /// Rows × planes (all planes): standard deviation `√tr Cov` (the RMS of the
     /// complex error) of each plane's trial effect `E_aj = W_aj·τ_j`, where
     /// `τ_j = max_k |T_jk|` is the plane's largest trial mass. With one trial per
@@ -127,17 +133,52 @@ pub fn propagate(
     used_planes: &[usize],
     c: &DVector<Complex64>,
 ) -> Propagation {
+    propagate_factored(t, y, cov, used_rows, row_weights, used_planes, c, None)
+}
+
+/// What the solve already computed that the propagation needs (issue 15).
+#[derive(Clone, Copy)]
+pub struct Known<'a> {
+    /// `T⁺`, trial runs × planes.
+    pub t_pinv: &'a DMatrix<Complex64>,
+    /// `W = ΔY T⁺`, rows × planes (method 2.1).
+    pub w: &'a DMatrix<Complex64>,
+    /// The factorisation of `A = G W[u,p]`.
+    pub factor: &'a Factored,
+}
+
+/// [`propagate`] with what the solve already has: `T⁺`, `W` and the
+/// factorisation of `A = G W[u,p]` (issue 15: `A⁺` and `(AᴴA)⁺` from the one
+/// factorisation, not a QR and SVD of their own); `None` computes them here.
+#[allow(clippy::too_many_arguments)]
+pub fn propagate_factored(
+    t: &DMatrix<Complex64>,
+    y: &DMatrix<Complex64>,
+    cov: &[Vec<Matrix2<f64>>],
+    used_rows: &[usize],
+    row_weights: &[f64],
+    used_planes: &[usize],
+    c: &DVector<Complex64>,
+    known: Option<Known>,
+) -> Propagation {
     let (n, runs) = y.shape();
     let planes = t.nrows();
     let q = used_planes.len();
-    let (tp, _) = svd_parts(t);
+    let (own_tp, own_w);
+    let (tp, w) = match known {
+        Some(k) => (k.t_pinv, k.w),
+        None => {
+            own_tp = svd_parts(t).0;
+            own_w = DMatrix::from_fn(n, planes, |a, j| {
+                (1..runs)
+                    .map(|k| (y[(a, k)] - y[(a, 0)]) * own_tp[(k - 1, j)])
+                    .sum::<Complex64>()
+            });
+            (&own_tp, &own_w)
+        }
+    };
     // Column sums of T⁺: how the reference reading enters every influence coefficient.
     let s: Vec<Complex64> = (0..planes).map(|j| tp.column(j).sum()).collect();
-    let w = DMatrix::from_fn(n, planes, |a, j| {
-        (1..runs)
-            .map(|k| (y[(a, k)] - y[(a, 0)]) * tp[(k - 1, j)])
-            .sum::<Complex64>()
-    });
     let amat = DMatrix::from_fn(used_rows.len(), q, |i, j| {
         w[(used_rows[i], used_planes[j])] * row_weights[i]
     });
@@ -145,10 +186,18 @@ pub fn propagate(
         y[(used_rows[i], 0)] * row_weights[i]
     });
     let r = &amat * c + b;
-    let svd = ThinSvd::of(&amat);
-    let tol = RANK_TOLERANCE * svd.max();
-    let (apinv, gram_inv) = svd.pinv_and_gram_inv(tol);
-    let full_rank = svd.singular_values.len() == q && svd.singular_values.iter().all(|&s| s > tol);
+    let own;
+    let factor = match known {
+        Some(k) => k.factor,
+        None => {
+            own = Factored::of(&amat);
+            &own
+        }
+    };
+    let tol = RANK_TOLERANCE * factor.max();
+    let (apinv, gram_inv) = factor.pinv_and_gram_inv(tol);
+    let sv = factor.singular_values();
+    let full_rank = sv.len() == q && sv.iter().all(|&s| s > tol);
     let gram_inv_diag = full_rank.then(|| (0..q).map(|j| gram_inv[(j, j)].re).collect());
     let mut position = vec![None; n];
     for (i, &a) in used_rows.iter().enumerate() {
@@ -242,8 +291,8 @@ pub fn propagate(
         // and the same for J with transposes: one q × rows × q product each
         // instead of three (issue 15). diag(s1) is real and diag(p1) enters
         // a symmetric form, so halving it on both sides is exact.
-        let mut mk = p3 * xi.adjoint();
-        let mut mj = s3 * xi.transpose();
+        let mut mk = cmul(&p3, &xi.adjoint());
+        let mut mj = cmul(&s3, &xi.transpose());
         for i in 0..m {
             let (half_s, half_p) = (s1[(i, 0)] * 0.5, p1[(i, 0)] * 0.5);
             for j in 0..q {
@@ -253,13 +302,13 @@ pub fn propagate(
             }
         }
         let xs = xi_scaled(&s2);
-        let ak = &a_vec * mk;
+        let ak = cmul(&a_vec, &mk);
         k_mat = &ak + ak.adjoint() + &xs * xs.adjoint();
         let mut xp = xi.clone();
         for (k, mut col) in xp.column_iter_mut().enumerate() {
             col *= p2[k];
         }
-        let aj = &a_vec * mj;
+        let aj = cmul(&a_vec, &mj);
         j_mat = &aj + aj.transpose() + xp * xi.transpose();
     }
     let correction_full = real_cov_full(&k_mat, &j_mat);
@@ -275,9 +324,10 @@ pub fn propagate(
     // part through C (w K wᴴ, w J wᵀ), and for a used row the cross terms of
     // its own readings, whose share of dC is (w·a_i) λ_k δ + (w·ξ_k) b_i δ̄.
     let w_used = DMatrix::from_fn(n, q, |a, j| w[(a, used_planes[j])]);
-    let wk = &w_used * &k_mat;
-    let wj = &w_used * &j_mat;
-    let wxi = &w_used * &xi; // n × runs: w_a · ξ_k
+    let wk = cmul(&w_used, &k_mat);
+    let wj = cmul(&w_used, &j_mat);
+    let wxi = cmul(&w_used, &xi); // n × runs: w_a · ξ_k
+    let mut through_correction = Vec::with_capacity(n);
     let (residual, prediction) = (0..n)
         .map(|a| {
             let (mut kd, mut jd) = (0.0, zero);
@@ -298,6 +348,7 @@ pub fn propagate(
             }
             let kt: Complex64 = (0..q).map(|j| wk[(a, j)] * w_used[(a, j)].conj()).sum();
             let jt: Complex64 = (0..q).map(|j| wj[(a, j)] * w_used[(a, j)]).sum();
+            through_correction.push(real_cov(kt.re, jt));
             let direct = real_cov(kd, jd);
             let whole = real_cov(kt.re + kd + 2.0 * kx.re, jt + jd + 2.0 * jx);
             (direct, whole)
@@ -306,8 +357,11 @@ pub fn propagate(
 
     // Trial effects: dW_aj = Σ_k dY_a,k T⁺_kj − dY_a0 s_j, independent terms; a
     // complex factor rotates a covariance without changing its trace.
+    let taus: Vec<f64> = (0..planes)
+        .map(|j| (0..t.ncols()).map(|k| t[(j, k)].norm()).fold(0.0, f64::max))
+        .collect();
     let effect_sd = DMatrix::from_fn(n, planes, |a, j| {
-        let tau = (0..t.ncols()).map(|k| t[(j, k)].norm()).fold(0.0, f64::max);
+        let tau = taus[j];
         let var = (1..runs)
             .map(|k| tp[(k - 1, j)].norm_sqr() * cov[a][k].trace())
             .sum::<f64>()
@@ -319,6 +373,7 @@ pub fn propagate(
         correction_full,
         residual,
         prediction,
+        through_correction,
         effect_sd,
         gram_inv_diag,
     }

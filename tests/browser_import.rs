@@ -187,6 +187,8 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
         "{code_like:?} in {words}"
     );
     browser::job::shots(b, "solution-warning").await;
+    browser::job::scroll_to(b, "#step-solve .summary").await;
+    browser::job::shots(b, "solution-warning-summary").await;
     stand.stop().await;
 }
 

@@ -31,10 +31,16 @@ pub enum Command {
         /// Solve options JSON (overrides options inside FILE).
         #[arg(long)]
         options: Option<PathBuf>,
+        #[command(flatten)]
+        input: InputArgs,
     },
     /// API 617/684 residual-unbalance check of a file (the body of
     /// `POST /api/v1/residual-unbalance`; `-` for standard input).
-    Residual { file: PathBuf },
+    Residual {
+        file: PathBuf,
+        #[command(flatten)]
+        input: InputArgs,
+    },
     /// Pool the runs of several session files into one set of influence
     /// coefficients (each session against its own reference run) and print them as JSON.
     Coefficients {
@@ -44,6 +50,8 @@ pub enum Command {
         /// Pooling options JSON (`exclude_disagreeing`, `amplitude_noise_pct`, `phase_noise_deg`).
         #[arg(long)]
         options: Option<PathBuf>,
+        #[command(flatten)]
+        input: InputArgs,
     },
     /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
     Identify {
@@ -51,7 +59,31 @@ pub enum Command {
         what: IdentifyWhat,
         /// The request JSON, as posted to `/api/v1/identify/<what>`; `-` for standard input.
         file: PathBuf,
+        #[command(flatten)]
+        input: InputArgs,
     },
+}
+
+/// What a file command accepts: the service's size limits, with the same
+/// flags, variables and defaults as `fieldbal serve` (README, "Settings"), so
+/// a file the service refuses is refused here too, and a job the service was
+/// set up to accept (limits raised) can be run offline.
+#[derive(Debug, Clone, clap::Args)]
+pub struct InputArgs {
+    /// Largest file read, bytes (checked before the file is parsed).
+    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = crate::http::DEFAULT_BODY_LIMIT)]
+    pub body_limit_bytes: usize,
+    #[command(flatten)]
+    pub session: crate::http::SessionLimitArgs,
+}
+
+impl InputArgs {
+    /// Put the session limits in force for this process and return the file
+    /// size limit.
+    fn apply(&self) -> usize {
+        crate::balancing::limits::Limits::configure(self.session.limits());
+        self.body_limit_bytes
+    }
 }
 
 /// Which identification `fieldbal identify` runs.
@@ -68,12 +100,30 @@ pub enum IdentifyWhat {
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Serve(args) => crate::http::serve_main(args),
-        Command::Solve { file, options } => solve_file(&file, options.as_deref()),
-        Command::Residual { file } => print_result(residual_file(&file)),
-        Command::Coefficients { files, options } => {
-            print_result(pool_files(&files, options.as_deref()))
+        Command::Solve {
+            file,
+            options,
+            input,
+        } => {
+            let max = input.apply();
+            solve_file(&file, options.as_deref(), max)
         }
-        Command::Identify { what, file } => print_result(identify_file(what, &file)),
+        Command::Residual { file, input } => {
+            let max = input.apply();
+            print_result(residual_file(&file, max))
+        }
+        Command::Coefficients {
+            files,
+            options,
+            input,
+        } => {
+            let max = input.apply();
+            print_result(pool_files(&files, options.as_deref(), max))
+        }
+        Command::Identify { what, file, input } => {
+            let max = input.apply();
+            print_result(identify_file(what, &file, max))
+        }
     }
 }
 
@@ -81,9 +131,10 @@ pub fn run(cli: Cli) -> ExitCode {
 fn identify_file(
     what: IdentifyWhat,
     file: &std::path::Path,
+    max: usize,
 ) -> Result<serde_json::Value, InputError> {
     use crate::identification as id;
-    let bytes = read(file)?;
+    let bytes = read(file, max)?;
     let value = match what {
         IdentifyWhat::Rotor => {
             serde_json::to_value(id::rotor::identify(&balancing::from_json(&bytes)?)?)
@@ -118,14 +169,14 @@ fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
     }
 }
 
-fn residual_file(file: &std::path::Path) -> Result<serde_json::Value, InputError> {
-    let req = balancing::acceptance::parse(&read(file)?)?;
+fn residual_file(file: &std::path::Path, max: usize) -> Result<serde_json::Value, InputError> {
+    let req = balancing::acceptance::parse(&read(file, max)?)?;
     let check = balancing::acceptance::check(&req)?;
     Ok(serde_json::to_value(check).expect("check serialises"))
 }
 
-fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>) -> ExitCode {
-    let (value, code) = match solve_file_inner(file, options) {
+fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>, max: usize) -> ExitCode {
+    let (value, code) = match solve_file_inner(file, options, max) {
         Ok(solution) => (solution, ExitCode::SUCCESS),
         Err(err) => (err.to_json(), ExitCode::from(2)),
     };
@@ -151,35 +202,54 @@ fn print_line(text: &str) -> std::io::Result<()> {
     out.flush()
 }
 
-/// The file's bytes; `-` reads standard input.
-fn read(path: &std::path::Path) -> Result<Vec<u8>, InputError> {
-    let bytes = if path.as_os_str() == "-" {
-        let mut buf = Vec::new();
-        std::io::Read::read_to_end(&mut std::io::stdin(), &mut buf).map(|_| buf)
-    } else {
-        std::fs::read(path)
-    };
-    bytes.map_err(|e| InputError {
+/// The file's bytes, at most `max` of them; `-` reads standard input. A
+/// longer file is refused before it is parsed (the service's 413
+/// `body_too_large`): parsing costs memory in proportion to its length.
+fn read(path: &std::path::Path, max: usize) -> Result<Vec<u8>, InputError> {
+    use std::io::Read;
+    let unreadable = |e: std::io::Error| InputError {
         kind: balancing::ErrorKind::Malformed,
         code: "unreadable_file",
         message: format!("cannot read {}: {e}", path.display()),
         field: None,
-    })
+    };
+    let mut buf = Vec::new();
+    // One byte more than the limit tells "at the limit" from "over it".
+    let cap = u64::try_from(max).unwrap_or(u64::MAX).saturating_add(1);
+    if path.as_os_str() == "-" {
+        std::io::stdin().take(cap).read_to_end(&mut buf)
+    } else {
+        std::fs::File::open(path).and_then(|f| f.take(cap).read_to_end(&mut buf))
+    }
+    .map_err(unreadable)?;
+    if buf.len() > max {
+        return Err(InputError {
+            kind: balancing::ErrorKind::Malformed,
+            code: "body_too_large",
+            message: format!(
+                "{} is larger than the limit of {max} bytes (raise it with --body-limit-bytes or FIELDBAL_BODY_LIMIT_BYTES)",
+                path.display()
+            ),
+            field: None,
+        });
+    }
+    Ok(buf)
 }
 
 fn solve_file_inner(
     file: &std::path::Path,
     options: Option<&std::path::Path>,
+    max: usize,
 ) -> Result<serde_json::Value, InputError> {
-    let bytes = read(file)?;
+    let bytes = read(file, max)?;
     let value: serde_json::Value = balancing::from_json(&bytes)?;
     if value.get("cases").is_some() {
         return identify_cases(&bytes);
     }
     let (session, mut opts) = balancing::parse_session_file(&bytes)?;
     if let Some(path) = options {
-        opts =
-            balancing::from_json::<SolveOptions>(&read(path)?).map_err(|e| e.under("options"))?;
+        opts = balancing::from_json::<SolveOptions>(&read(path, max)?)
+            .map_err(|e| e.under("options"))?;
     }
     let solution = balancing::solve(&session, &opts)?;
     Ok(serde_json::to_value(solution).expect("solution serialises"))
@@ -206,15 +276,16 @@ fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
 fn pool_files(
     files: &[PathBuf],
     options: Option<&std::path::Path>,
+    max: usize,
 ) -> Result<serde_json::Value, InputError> {
     let mut sessions = Vec::with_capacity(files.len());
     for (i, f) in files.iter().enumerate() {
-        let (session, _) = balancing::parse_session_file(&read(f)?)
+        let (session, _) = balancing::parse_session_file(&read(f, max)?)
             .map_err(|e| e.under(&format!("sessions[{i}]")))?;
         sessions.push((f.display().to_string(), session));
     }
     let opts = match options {
-        Some(path) => balancing::from_json(&read(path)?).map_err(|e| e.under("options"))?,
+        Some(path) => balancing::from_json(&read(path, max)?).map_err(|e| e.under("options"))?,
         None => balancing::job::pool::PoolOptions::default(),
     };
     let pooled = balancing::job::pool::pool(&sessions, &opts)?;

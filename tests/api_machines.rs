@@ -10,10 +10,7 @@ use common::{post, send, start_server};
 use fieldbal::balancing::model::Conventions;
 use fieldbal::balancing::phasor::{angle_diff_deg, weight_out};
 use job_support::*;
-use num_complex::Complex64;
 use serde_json::{json, Value};
-
-const NO_RUNOUT: [Complex64; 2] = [Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
 
 fn job_session(rotor: &Rotor, machine: &str, trials: bool, seed: u64) -> Value {
     let conv = Conventions::default();
@@ -22,35 +19,19 @@ fn job_session(rotor: &Rotor, machine: &str, trials: bool, seed: u64) -> Value {
     } else {
         Noise::new(1.0, 1.0, seed)
     };
-    let mut runs = vec![run(
-        rotor,
-        conv,
-        "zero",
-        &vec![],
-        &vec![],
-        &mut n,
-        &NO_RUNOUT,
-    )];
-    if trials {
-        runs.push(run(
+    let runs = if trials {
+        first_runs(rotor, conv, &mut n, &NO_RUNOUT, 0.0)
+    } else {
+        vec![run(
             rotor,
             conv,
-            "trial A",
-            &vec![(0, 40.0, 0.0)],
-            &vec![(0, 40.0, 0.0)],
+            "zero",
+            &vec![],
+            &vec![],
             &mut n,
             &NO_RUNOUT,
-        ));
-        runs.push(run(
-            rotor,
-            conv,
-            "trial B",
-            &vec![(1, 40.0, 90.0)],
-            &vec![(1, 40.0, 90.0)],
-            &mut n,
-            &NO_RUNOUT,
-        ));
-    }
+        )]
+    };
     let mut s = session(conv, runs);
     s["machine"] = json!(machine);
     s

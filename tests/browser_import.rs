@@ -135,6 +135,41 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
         row[2], row[3],
         "greyed, not the ordinary text colour: {row}"
     );
+    // So is what it predicts: the summary and the "after" column, greyed and plain, saying why.
+    let summary = b
+        .client
+        .execute(
+            "const s = document.querySelector('#step-solve .summary'); \
+             const v = [...s.querySelectorAll('.big .value')]; const a = document.querySelector('#step-solve table.residual td.after'); \
+             return [s.className, v.map((e) => getComputedStyle(e).fontWeight), v.map((e) => getComputedStyle(e).color), \
+                     getComputedStyle(a).fontWeight, getComputedStyle(a).color, getComputedStyle(document.body).color, s.innerText]",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(summary[0], "summary unsure", "{summary}");
+    assert_eq!(
+        summary[1],
+        json!(["400", "400", "400"]),
+        "no bold figures: {summary}"
+    );
+    for colour in summary[2].as_array().unwrap().iter().chain([&summary[4]]) {
+        assert_ne!(
+            colour, &summary[5],
+            "greyed, not the text colour: {summary}"
+        );
+    }
+    assert_eq!(
+        summary[3], "400",
+        "the predicted after is not bold: {summary}"
+    );
+    let said = summary[6].as_str().unwrap();
+    assert!(
+        said.contains("Not to be trusted")
+            && said.contains("bigger trial weight")
+            && said.contains("about"),
+        "{said}"
+    );
     let doubts = b.text("#step-solve .doubts").await;
     assert!(
         doubts.contains("too small to measure its effect")
@@ -142,13 +177,18 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
         "{doubts}"
     );
     // Plain words: no backticks, no field names or codes.
-    let words = format!("{}\n{doubts}", b.text("#step-solve .warnings").await);
+    let words = format!(
+        "{}\n{doubts}\n{said}",
+        b.text("#step-solve .warnings").await
+    );
     let code_like = code_words(&words);
     assert!(
         !words.contains('`') && code_like.is_empty(),
         "{code_like:?} in {words}"
     );
     browser::job::shots(b, "solution-warning").await;
+    browser::job::scroll_to(b, "#step-solve .summary").await;
+    browser::job::shots(b, "solution-warning-summary").await;
     stand.stop().await;
 }
 

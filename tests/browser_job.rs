@@ -24,7 +24,7 @@ use browser::scenes::{
 use browser::stand::{example_session, Stand};
 use browser::steps::{
     fits_a_tablet, grid_header_and_actions_are_sticky, js, named, service_trim, solve, stored_id,
-    type_and_store, typed_mistakes_are_refused_with_the_reason,
+    summary_look, type_and_store, typed_mistakes_are_refused_with_the_reason,
 };
 use serde_json::{json, Value};
 
@@ -162,6 +162,11 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     .await;
     b.wait_for("#step-solve table.corrections").await;
     shots(b, "job-corrections").await;
+    // The outboard correction's 95 % figures are wide: what it predicts is greyed too.
+    assert_eq!(
+        summary_look(b).await,
+        json!(["summary unsure", ["400", "400", "400"]])
+    );
     scroll_to(b, ".plane-pics").await;
     shots(b, "job-plane-pictures").await;
     fits_a_tablet(b, "corrections").await;
@@ -213,6 +218,11 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     b.click("#step-solve button.solve").await;
     let verdict = b.text(".verdict").await;
     assert!(verdict.starts_with("Within tolerance"), "{verdict}");
+    // A sure answer is shown sure: bold figures, no doubt said (the greyed case is browser_import's).
+    assert_eq!(
+        summary_look(b).await,
+        json!(["summary", ["700", "700", "700"]])
+    );
     shots(b, "job-within-tolerance").await;
 
     // (g) The report: the answer on its first page, then what ISO 21940-13 asks.
@@ -328,6 +338,6 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     machine_page_and_trim_from_stored_coefficients(&stand, &truth).await;
     new_job_with_rotor_places_and_kits(&stand, &truth).await;
     multi_speed_job_shows_bode_plots(&stand).await;
-    the_form_weighs_little_and_asks_nothing_of_other_hosts(b).await;
+    the_form_weighs_little_and_asks_nothing_of_other_hosts(&stand).await;
     stand.stop().await;
 }

@@ -116,6 +116,84 @@ async fn the_limits_are_set_by_serve_flags() {
         .contains("limit is 2"));
 }
 
+/// `fieldbal solve FILE ARGS…` with no limit variables inherited: its exit
+/// code and the JSON it printed.
+fn solve_file(file: &std::path::Path, args: &[&str], stdin: Option<&[u8]>) -> (i32, Value) {
+    use std::io::Write;
+    use std::process::{Command, Stdio};
+    let mut command = Command::new(env!("CARGO_BIN_EXE_fieldbal"));
+    command.arg("solve").arg(file).args(args);
+    for (name, _) in std::env::vars().filter(|(n, _)| n.starts_with("FIELDBAL_")) {
+        command.env_remove(name);
+    }
+    let mut child = command
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("fieldbal solve starts");
+    let mut input = child.stdin.take().unwrap();
+    if let Some(bytes) = stdin {
+        // The command may stop reading at its limit: a closed pipe is fine.
+        let _ = input.write_all(bytes);
+    }
+    drop(input);
+    let out = child.wait_with_output().unwrap();
+    let answer = serde_json::from_slice(&out.stdout).expect("the answer is JSON");
+    (out.status.code().unwrap(), answer)
+}
+
+#[test]
+fn fieldbal_solve_reads_the_service_limits_and_a_raised_limit_lets_a_larger_job_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let small = dir.path().join("three-planes.json");
+    std::fs::write(&small, session(3, 4, 1).to_string()).unwrap();
+    let (code, answer) = solve_file(&small, &["--max-planes", "2"], None);
+    assert_eq!(code, 2, "{answer}");
+    assert_eq!(answer["error"]["code"], "too_large");
+    assert_eq!(answer["error"]["field"], "planes");
+    assert!(answer["error"]["message"]
+        .as_str()
+        .unwrap()
+        .contains("limit is 2"));
+    assert_eq!(solve_file(&small, &[], None).0, 0);
+    // 65 planes: over the default of 64, solved once the limit is raised.
+    let large = dir.path().join("65-planes.json");
+    std::fs::write(&large, session(65, 2, 40).to_string()).unwrap();
+    let (code, answer) = solve_file(&large, &[], None);
+    assert_eq!((code, &answer["error"]["field"]), (2, &json!("planes")));
+    let (code, answer) = solve_file(&large, &["--max-planes", "65"], None);
+    assert_eq!(code, 0, "{answer}");
+    assert_eq!(answer["corrections"].as_array().unwrap().len(), 65);
+}
+
+#[test]
+fn fieldbal_solve_refuses_a_file_over_the_body_limit_before_parsing_it() {
+    let dir = tempfile::tempdir().unwrap();
+    // Not even JSON: refused for its size, not for its syntax, so it was not parsed.
+    let junk = format!("{{{}", "x".repeat(2_000));
+    let file = dir.path().join("big.json");
+    std::fs::write(&file, &junk).unwrap();
+    let limit = ["--body-limit-bytes", "1000"];
+    for (case, path, stdin) in [
+        ("file", file.as_path(), None),
+        (
+            "standard input",
+            std::path::Path::new("-"),
+            Some(junk.as_bytes()),
+        ),
+    ] {
+        let (code, answer) = solve_file(path, &limit, stdin);
+        assert_eq!(code, 2, "{case}: {answer}");
+        assert_eq!(answer["error"]["code"], "body_too_large", "{case}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(message.contains("1000 bytes"), "{case}: {message}");
+    }
+    // Under the limit the same junk is a syntax error.
+    let (code, answer) = solve_file(&file, &[], None);
+    assert_eq!(code, 2);
+    assert_ne!(answer["error"]["code"], "body_too_large", "{answer}");
+}
+
 /// The attack of issue 9: 150,000 planes and many runs in under 4 MiB used to
 /// allocate a planes × runs matrix of 33 GB.
 fn planes_times_runs_attack() -> Vec<u8> {

@@ -7,38 +7,12 @@ use std::process::Command;
 
 use fieldbal::balancing::model::Conventions;
 use job_support::*;
-use num_complex::Complex64;
 use serde_json::{json, Value};
-
-const NO_RUNOUT: [Complex64; 2] = [Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
 
 fn trials(seed: u64) -> Value {
     let (rotor, conv) = (Rotor::new(), Conventions::default());
     let mut n = Noise::new(1.0, 1.0, seed);
-    session(
-        conv,
-        vec![
-            run(&rotor, conv, "zero", &vec![], &vec![], &mut n, &NO_RUNOUT),
-            run(
-                &rotor,
-                conv,
-                "trial A",
-                &vec![(0, 40.0, 0.0)],
-                &vec![(0, 40.0, 0.0)],
-                &mut n,
-                &NO_RUNOUT,
-            ),
-            run(
-                &rotor,
-                conv,
-                "trial B",
-                &vec![(1, 40.0, 90.0)],
-                &vec![(1, 40.0, 90.0)],
-                &mut n,
-                &NO_RUNOUT,
-            ),
-        ],
-    )
+    session(conv, first_runs(&rotor, conv, &mut n, &NO_RUNOUT, 0.0))
 }
 
 fn fieldbal(args: &[&str]) -> (i32, Value) {

@@ -10,10 +10,7 @@ use fieldbal::balancing::model::Conventions;
 use fieldbal::balancing::phasor::{angle_diff_deg, reading_out, weight_out};
 use fieldbal::balancing::Session;
 use job_support::*;
-use num_complex::Complex64;
 use serde_json::{json, Value};
-
-const NO_RUNOUT: [Complex64; 2] = [Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
 
 /// The rotor's exact coefficients as the option lists them, in `conv`.
 fn exact_coefficients(rotor: &Rotor, conv: Conventions, sd: Option<f64>) -> Value {
@@ -34,44 +31,27 @@ fn exact_coefficients(rotor: &Rotor, conv: Conventions, sd: Option<f64>) -> Valu
 
 /// A reference run and trials (one per plane, or none), from `rotor`.
 fn runs(rotor: &Rotor, conv: Conventions, trials: bool, noise: &mut Noise) -> Vec<Value> {
-    let mut r = vec![run(
+    if !trials {
+        return vec![run(
+            rotor,
+            conv,
+            "zero",
+            &vec![],
+            &vec![],
+            noise,
+            &NO_RUNOUT,
+        )];
+    }
+    let mut r = first_runs(rotor, conv, noise, &NO_RUNOUT, 0.0);
+    r.push(run(
         rotor,
         conv,
-        "zero",
-        &vec![],
-        &vec![],
+        "both",
+        &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
+        &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
         noise,
         &NO_RUNOUT,
-    )];
-    if trials {
-        r.push(run(
-            rotor,
-            conv,
-            "trial A",
-            &vec![(0, 40.0, 0.0)],
-            &vec![(0, 40.0, 0.0)],
-            noise,
-            &NO_RUNOUT,
-        ));
-        r.push(run(
-            rotor,
-            conv,
-            "trial B",
-            &vec![(1, 40.0, 90.0)],
-            &vec![(1, 40.0, 90.0)],
-            noise,
-            &NO_RUNOUT,
-        ));
-        r.push(run(
-            rotor,
-            conv,
-            "both",
-            &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
-            &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
-            noise,
-            &NO_RUNOUT,
-        ));
-    }
+    ));
     r
 }
 

@@ -30,30 +30,9 @@ fn runout() -> [Complex64; 2] {
 
 fn job(conv: Conventions, runout: &[Complex64; 2]) -> Value {
     let rotor = Rotor::new();
-    let mut n = Noise::none();
     session(
         conv,
-        vec![
-            run(&rotor, conv, "zero", &vec![], &vec![], &mut n, runout),
-            run(
-                &rotor,
-                conv,
-                "trial A",
-                &vec![(0, 40.0, 0.0)],
-                &vec![(0, 40.0, 0.0)],
-                &mut n,
-                runout,
-            ),
-            run(
-                &rotor,
-                conv,
-                "trial B",
-                &vec![(1, 40.0, 90.0)],
-                &vec![(1, 40.0, 90.0)],
-                &mut n,
-                runout,
-            ),
-        ],
+        first_runs(&rotor, conv, &mut Noise::none(), runout, 0.0),
     )
 }
 

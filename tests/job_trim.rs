@@ -10,33 +10,6 @@ use job_support::*;
 use num_complex::Complex64;
 use serde_json::{json, Value};
 
-const NO_RUNOUT: [Complex64; 2] = [Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
-
-/// The first three runs; trial B is typed at 90° but was put at `90 + typo`.
-fn first_runs(rotor: &Rotor, conv: Conventions, noise: &mut Noise, typo: f64) -> Vec<Value> {
-    vec![
-        run(rotor, conv, "zero", &vec![], &vec![], noise, &NO_RUNOUT),
-        run(
-            rotor,
-            conv,
-            "trial A",
-            &vec![(0, 40.0, 0.0)],
-            &vec![(0, 40.0, 0.0)],
-            noise,
-            &NO_RUNOUT,
-        ),
-        run(
-            rotor,
-            conv,
-            "trial B",
-            &vec![(1, 40.0, 90.0)],
-            &vec![(1, 40.0, 90.0 + typo)],
-            noise,
-            &NO_RUNOUT,
-        ),
-    ]
-}
-
 /// The one-shot correction fitted with a 10 % error in mass and 6° in angle.
 fn fitted(conv: Conventions, one_shot: &Solution) -> Weights {
     PLANES
@@ -53,7 +26,7 @@ fn fitted(conv: Conventions, one_shot: &Solution) -> Weights {
 /// The job up to the check run: (session with the check run, one-shot solution, fitted weights).
 fn job(conv: Conventions, noise: &mut Noise, typo: f64) -> (Value, Solution, Weights) {
     let rotor = Rotor::new();
-    let mut runs = first_runs(&rotor, conv, noise, typo);
+    let mut runs = first_runs(&rotor, conv, noise, &NO_RUNOUT, typo);
     let one_shot = solve_json(&session(conv, runs.clone()), json!({}));
     let fit = fitted(conv, &one_shot);
     runs.push(run(&rotor, conv, "check", &fit, &fit, noise, &NO_RUNOUT));
@@ -207,7 +180,10 @@ fn the_check_of_a_run_compares_its_reading_with_the_prediction_of_the_others() {
 fn a_session_with_one_trial_per_plane_has_no_run_checks_and_no_total() {
     let conv = Conventions::default();
     let mut noise = Noise::none();
-    let s = session(conv, first_runs(&Rotor::new(), conv, &mut noise, 0.0));
+    let s = session(
+        conv,
+        first_runs(&Rotor::new(), conv, &mut noise, &NO_RUNOUT, 0.0),
+    );
     let sol = solve_json(&s, json!({}));
     assert!(sol.run_checks.is_none());
     assert!(sol.from_run.is_none());

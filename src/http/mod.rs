@@ -68,6 +68,21 @@ pub struct ServeArgs {
 /// `fieldbal serve` size limits and solve concurrency (README, "Settings").
 #[derive(Debug, Clone, clap::Args)]
 pub struct LimitArgs {
+    #[command(flatten)]
+    pub session: SessionLimitArgs,
+    /// Solves that run at once (default: the number of CPUs).
+    #[arg(long, env = "FIELDBAL_SOLVE_SLOTS")]
+    pub solve_slots: Option<usize>,
+    /// How long a solve waits for a free slot before 503 with Retry-After, ms.
+    #[arg(long, env = "FIELDBAL_SOLVE_QUEUE_MS", default_value_t = work::DEFAULT_SOLVE_QUEUE_MS)]
+    pub solve_queue_ms: u64,
+}
+
+/// The size limits of one session (422 `too_large` beyond them), read by
+/// `fieldbal serve` and by the commands that read a session file, so a job
+/// the service was set up to accept can be run offline too.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SessionLimitArgs {
     /// Most correction planes in a session.
     #[arg(long, env = "FIELDBAL_MAX_PLANES", default_value_t = Limits::DEFAULT.planes)]
     pub max_planes: usize,
@@ -83,12 +98,20 @@ pub struct LimitArgs {
     /// Most readings over all runs of a session.
     #[arg(long, env = "FIELDBAL_MAX_READINGS", default_value_t = Limits::DEFAULT.readings)]
     pub max_readings: usize,
-    /// Solves that run at once (default: the number of CPUs).
-    #[arg(long, env = "FIELDBAL_SOLVE_SLOTS")]
-    pub solve_slots: Option<usize>,
-    /// How long a solve waits for a free slot before 503 with Retry-After, ms.
-    #[arg(long, env = "FIELDBAL_SOLVE_QUEUE_MS", default_value_t = work::DEFAULT_SOLVE_QUEUE_MS)]
-    pub solve_queue_ms: u64,
+}
+
+impl SessionLimitArgs {
+    /// The limits these arguments set (the others keep their defaults).
+    pub fn limits(&self) -> Limits {
+        Limits {
+            planes: self.max_planes,
+            sensors: self.max_sensors,
+            speed_points: self.max_speed_points,
+            runs: self.max_runs,
+            readings: self.max_readings,
+            ..Limits::DEFAULT
+        }
+    }
 }
 
 /// Settings the handlers need.
@@ -398,14 +421,7 @@ async fn run(args: ServeArgs) -> Result<(), String> {
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(%addr, database = %crate::db::engine::redacted(&args.database), "fieldbal serve listening");
     let l = &args.limits;
-    Limits::configure(Limits {
-        planes: l.max_planes,
-        sensors: l.max_sensors,
-        speed_points: l.max_speed_points,
-        runs: l.max_runs,
-        readings: l.max_readings,
-        ..Limits::DEFAULT
-    });
+    Limits::configure(l.session.limits());
     let state = AppState::new(pool.clone())
         .with_solve_slots(
             l.solve_slots.unwrap_or_else(work::default_solve_slots),

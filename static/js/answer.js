@@ -36,7 +36,8 @@ export function trimWords(sol) {
   return h("div", { class: "trim" },
     h("h3", {}, `Trim: the rotor as it is in run “${sol.from_run}”${run ? ` (${run.weights.length} weight${run.weights.length === 1 ? "" : "s"} on)` : ""}`),
     h("ul", {}, sol.corrections.map((c) => h("li", { dataset: { plane: c.plane } },
-      c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h("strong", {}, `Plane ${c.plane}: add ${fmt(c.mass_g, 1)} g at ${fmtAngle(c.angle_deg)} to what is on now`),
+      // A doubtful trim is said, not shouted: no bold for a weight that may be far off.
+      c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h(doubt(sol, c) ? "span" : "strong", { class: doubt(sol, c) ? "doubtful" : null }, `Plane ${c.plane}: add ${fmt(c.mass_g, 1)} g at ${fmtAngle(c.angle_deg)} to what is on now`),
       c.total ? `, or replace the weights in this plane by one weight of ${fmt(c.total.mass_g, 1)} g at ${fmtAngle(c.total.angle_deg)}.` : "."))));
 }
 

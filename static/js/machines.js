@@ -11,25 +11,41 @@ import { state, setupOf, emptySetup } from "./state.js";
 
 const when = (t) => (t ? String(t).replace("T", " ").replace(/:\d\d(\.\d+)?Z$/, " UTC") : "");
 
-/** Before and after per job, oldest first, as two lines. */
+/**
+ * Each job's date on the trend's axis: the day; below it the time when another
+ * job shares the day (with seconds when they share the minute too).
+ */
+export function jobDates(stamps) {
+  const at = stamps.map((t) => String(t || ""));
+  const shared = (i, n) => at.filter((t) => t.slice(0, n) === at[i].slice(0, n)).length > 1;
+  return at.map((t, i) => [t.slice(0, 10), shared(i, 10) ? t.slice(11, shared(i, 16) ? 19 : 16) : ""]);
+}
+
+/** Before and after per job, oldest first, as two lines over the jobs' dates. */
 function trend(sessions) {
   const jobs = sessions.filter((x) => x.summary).sort((a, b) => String(a.created_at).localeCompare(String(b.created_at)));
   if (jobs.length === 0) return h("p", { class: "hint" }, "No solved job yet: the trend starts with the first.");
   const W = 360;
-  const H = 120;
+  const H = 150;
   const top = Math.max(...jobs.map((j) => j.summary.rms_before), 1e-9);
-  const x = (i) => (jobs.length === 1 ? W / 2 : 30 + (i * (W - 50)) / (jobs.length - 1));
-  const y = (v) => 10 + (1 - v / top) * (H - 30);
+  const x = (i) => (jobs.length === 1 ? W / 2 : 40 + (i * (W - 80)) / (jobs.length - 1));
+  const y = (v) => 10 + (1 - v / top) * (H - 60);
   const line = (key, colour) => [
     s("path", { d: jobs.map((j, i) => `${i ? "L" : "M"}${x(i).toFixed(1)},${y(j.summary[key]).toFixed(1)}`).join(" "), stroke: colour, class: "series" }),
     jobs.map((j, i) => s("circle", { cx: x(i), cy: y(j.summary[key]), r: 3, fill: colour })),
   ];
+  // At most five dates fit under 360 units: the first, the last and evenly between.
+  const shown = new Set(jobs.length <= 5 ? jobs.keys() : [0, 1, 2, 3, 4].map((k) => Math.round((k * (jobs.length - 1)) / 4)));
+  const dates = jobDates(jobs.map((j) => j.created_at));
   return h("figure", { class: "trend-fig" },
     h("figcaption", {}, "RMS vibration per job: before (blue) and predicted after (green)"),
     s("svg", { viewBox: `0 0 ${W} ${H}`, class: "trend", role: "img", "aria-label": "Vibration per job over time" },
       s("line", { x1: 25, x2: W - 10, y1: y(0), y2: y(0), class: "grid" }),
       s("text", { x: 2, y: y(top) + 4, class: "tick" }, fmt(top, 0)),
       s("text", { x: 2, y: y(0) + 4, class: "tick" }, "0"),
+      dates.map(([day, time], i) => (!shown.has(i) ? "" : s("text", { x: x(i), y: y(0) + 16, class: "tick date", "text-anchor": "middle" },
+        s("tspan", { x: x(i) }, day), time ? s("tspan", { x: x(i), dy: 11 }, time) : ""))),
+      s("text", { x: W / 2, y: H - 3, class: "axis-title", "text-anchor": "middle" }, "job, by the date it was stored (UTC)"),
       line("rms_before", "#1d4ed8"), line("rms_after", "#15803d")));
 }
 

@@ -44,13 +44,24 @@ function isoVerdict(sol) {
         h("td", {}, word(v.after_correction_pass)))))));
 }
 
+/**
+ * The fixed place a weight sits at, from its angle: the plane's equally
+ * spaced places (place 0 at the mark) or its listed angles; "–" off a place.
+ */
+export function placeOf(plane, angle) {
+  const near = (a, b) => Math.abs(((a - b + 540) % 360) - 180) < 0.05;
+  const at = plane && plane.places_deg ? plane.places_deg : plane && plane.positions ? [...Array(plane.positions).keys()].map((k) => (360 * k) / plane.positions) : [];
+  const k = at.findIndex((a) => near(a, angle));
+  return k < 0 ? "–" : String(k);
+}
+
 /** A weight as the report lists it: plane, mass, radius, angle, place. */
 function weightRows(run) {
   const planes = new Map(state.setup.planes.map((p) => [p.id, p]));
   return run.weights.map((w, i) => h("tr", {},
     h("td", {}, i === 0 ? run.id : ""), h("td", {}, w.plane), h("td", {}, `${fmt(w.mass_g, 1)} g`),
     h("td", {}, planes.get(w.plane) && planes.get(w.plane).radius_mm ? `${fmt(planes.get(w.plane).radius_mm, 0)} mm` : "–"),
-    h("td", {}, fmtAngle(w.angle_deg)), h("td", {}, "–")));
+    h("td", {}, fmtAngle(w.angle_deg)), h("td", { class: "place" }, placeOf(planes.get(w.plane), w.angle_deg))));
 }
 
 function coefficientsTable(sol) {

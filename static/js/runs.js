@@ -198,7 +198,7 @@ function weightsEditor(d, k, rerender) {
         h("td", {}, selectInput({ field: `runs[${k}].weights[${j}].plane`, value: w.plane, choices: planes, label: `Weight ${j + 1} plane`, onValue: (v) => (w.plane = v) })),
         h("td", {}, numberInput({ field: `runs[${k}].weights[${j}].mass_g`, kind: "mass", value: w.mass_g, label: `Weight ${j + 1} mass, g`, onValue: (v) => (w.mass_g = v) })),
         h("td", {}, numberInput({ field: `runs[${k}].weights[${j}].angle_deg`, kind: "angle", value: w.angle_deg, label: `Weight ${j + 1} angle, degrees`, onValue: (v) => (w.angle_deg = v) })),
-        h("td", {}, h("button", { type: "button", class: "small", onclick: () => { d.weights.splice(j, 1); rerender(); } }, "Remove")),
+        h("td", {}, h("button", { type: "button", class: "small remove-weight", onclick: () => { d.weights.splice(j, 1); rerender(); } }, "Remove")),
       ))),
     ),
     h("button", { type: "button", class: "small add-weight", onclick: () => { d.weights.push({ plane: state.setup.planes[0].id, mass_g: null, angle_deg: null }); rerender(); } }, "+ Add weight"),

@@ -57,7 +57,7 @@ function negligible(r) {
 }
 
 export function residualTable(solution) {
-  return h("table", { class: "residual" },
+  return h("table", { class: unsure(solution) ? "residual unsure" : "residual" },
     h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, "Phase"), h("th", {}, "Unit"))),
     h("tbody", {}, solution.predicted_residual.map((r) => h("tr", { class: r.used === false ? "unused" : "" },
       h("td", {}, fmt(r.speed_rpm, 0)),
@@ -71,13 +71,24 @@ export function residualTable(solution) {
   );
 }
 
+/** Whether any correction of the answer is not to be trusted as it stands (words.js). */
+export function unsure(solution) {
+  return (solution.corrections || []).some((c) => doubt(solution, c));
+}
+
+/**
+ * Before → after. The "after" figures assume the corrections are right: when
+ * one is greyed they are greyed too, said to be a guess, and point to what to do.
+ */
 export function summaryBox(solution) {
   const sm = solution.summary;
   const cut = sm.rms_before > 0 ? 100 * (1 - sm.rms_after / sm.rms_before) : 0;
-  return h("div", { class: "summary" },
-    h("div", { class: "big" }, h("span", { class: "label" }, "RMS over sensors"), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${fmt(sm.rms_after, 1)}`)),
-    h("div", { class: "big" }, h("span", { class: "label" }, "Largest"), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${fmt(sm.max_after, 1)}`)),
-    h("div", { class: "big" }, h("span", { class: "label" }, "Reduction"), h("span", { class: "value" }, `${fmt(cut, 0)} %`)),
+  const doubtful = unsure(solution);
+  return h("div", { class: doubtful ? "summary unsure" : "summary" },
+    doubtful ? h("p", { class: "unsure-note" }, "Not to be trusted: the vibration after and the reduction below assume the corrections above are right, and the greyed ones may be far off. Do what is said under them first (a bigger trial weight, or a check run and a trim).") : "",
+    h("div", { class: "big" }, h("span", { class: "label" }, "RMS over sensors"), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.rms_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, "Largest"), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.max_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, doubtful ? "Reduction, if the corrections were right" : "Reduction"), h("span", { class: "value" }, `${fmt(cut, 0)} %`)),
     h("div", { class: "small" }, `Condition number ${fmt(solution.condition_number, 1)}`),
     solution.iso_21940 ? h("div", { class: "small" }, `ISO 21940-11 ${solution.iso_21940.balance_grade}: permissible ${fmt(solution.iso_21940.permissible_per_plane_gmm, 0)} g·mm per plane`) : "",
   );

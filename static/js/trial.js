@@ -57,14 +57,16 @@ export function suggestionBox(d, k, rerender) {
     h("h4", {}, "Suggested trial weights (about 30 % change in vibration)"),
     h("ul", {}, s.items.map((x) => h("li", { dataset: { plane: x.plane } },
       `Plane ${x.plane}: ${fmt(x.mass_g, 1)} g at ${fmtAngle(x.angle_deg)}`,
-      x.weights ? ` — kit weights ${x.weights.map((m) => `${fmt(m, 1)} g`).join(" + ")} at place ${x.place}` : "",
+      x.weights ? ` — kit weights ${x.weights.map((m) => `${fmt(m, 1)} g`).join(" + ")} stacked at place ${x.place}` : "",
       x.basis === "rotor" ? " (from the rotor's mass and speed: a centrifugal force of a tenth of its weight on the plane)" : x.expected_change_pct ? ` (expected change ${fmt(x.expected_change_pct, 0)} %)` : "",
       " ",
       h("button", { type: "button", class: "small use-suggestion", onclick: () => {
-        const w = d.weights[0] || (d.weights[0] = {});
-        w.plane = x.plane;
-        w.mass_g = Number(fmt(x.weights ? x.weights.reduce((a, b) => a + b, 0) : x.mass_g, 1));
-        w.angle_deg = Number(fmtAngle(x.angle_deg).replace("°", ""));
+        // What the fitter bolts on: each kit weight of a stack is a weight of
+        // its own, all at the place's angle (not one weight of their sum).
+        const angle = Number(fmtAngle(x.angle_deg).replace("°", ""));
+        const masses = x.weights && x.weights.length ? x.weights : [x.mass_g];
+        d.weights = d.weights.filter((w) => w.plane !== x.plane && w.mass_g !== null && w.mass_g !== undefined);
+        d.weights.push(...masses.map((m) => ({ plane: x.plane, mass_g: Number(fmt(m, 1)), angle_deg: angle })));
         rerender();
       } }, "Use it")))));
 }

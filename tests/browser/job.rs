@@ -128,8 +128,11 @@ pub async fn sideways(b: &Browser) -> (i64, Value) {
     let got = b
         .client
         .execute(
-            "return [document.documentElement.scrollWidth - window.innerWidth, \
-                     [...document.querySelectorAll('body *')].filter((e) => e.getBoundingClientRect().right > innerWidth + 1 && !e.closest('.scroll')) \
+            // clientWidth, not innerWidth: the vertical scroll bar takes its
+            // width from the page, and a page that fits under it still scrolls sideways.
+            "const w = document.documentElement.clientWidth; \
+             return [document.documentElement.scrollWidth - w, \
+                     [...document.querySelectorAll('body *')].filter((e) => e.getBoundingClientRect().right > w + 1 && !e.closest('.scroll')) \
                        .slice(0, 6).map((e) => `${e.tagName}.${e.className.baseVal ?? e.className} ${Math.round(e.getBoundingClientRect().right)}`)]",
             vec![],
         )

@@ -142,16 +142,7 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
     }
     shots(b, "job-trial-suggestion").await;
     super::steps::fits_a_tablet(b, "trial suggestion").await;
-    b.click(".suggestion li[data-plane=\"inboard\"] button.use-suggestion")
-        .await;
-    let used: f64 = value_of(b, &field("runs[1].weights[0].mass_g"))
-        .await
-        .parse()
-        .unwrap();
-    assert!(
-        (used - suggestions[0]["mass_g"].as_f64().unwrap()).abs() <= 0.05 + 1e-9,
-        "{used}"
-    );
+    use_it_enters_each_kit_weight(b, suggestions).await;
 
     // The trials: the fitter used the example's weights; the readings from the same file.
     for (k, name) in [(1usize, "trial inboard"), (2, "trial outboard")] {
@@ -197,4 +188,61 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
 
     kit_fit_is_drawn_where_it_goes(stand, &id).await;
     super::machine::the_machine_page_shows_vibration_before_and_after_per_job(stand).await;
+}
+
+/// "Use it" on a stack of kit weights enters each weight the fitter bolts on,
+/// all at the place's angle, not one weight of their sum; the extra rows are
+/// then removed, as the trials below use the example's own weights.
+async fn use_it_enters_each_kit_weight(b: &Browser, suggestions: &[Value]) {
+    let stack = suggestions
+        .iter()
+        .find(|s| s["weights"].as_array().is_some_and(|w| w.len() >= 2))
+        .unwrap_or_else(|| panic!("a suggestion of two kit weights or more: {suggestions:?}"));
+    let plane = stack["plane"].as_str().unwrap();
+    let text = b
+        .text(&format!(".suggestion li[data-plane=\"{plane}\"]"))
+        .await;
+    let parts: Vec<String> = stack["weights"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| format!("{} g", fmt(m.as_f64().unwrap(), 1)))
+        .collect();
+    assert!(
+        text.contains(&format!(
+            "{} stacked at place {}",
+            parts.join(" + "),
+            stack["place"]
+        )),
+        "{text:?} names the parts {parts:?}"
+    );
+    b.click(&format!(
+        ".suggestion li[data-plane=\"{plane}\"] button.use-suggestion"
+    ))
+    .await;
+    let entered = super::job::weights_in_editor(b, 1).await;
+    let angle: f64 = format!(
+        "{:.1}",
+        stack["angle_deg"].as_f64().unwrap().rem_euclid(360.0)
+    )
+    .parse()
+    .unwrap();
+    let want: Vec<Value> = stack["weights"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| json!({ "plane": plane, "mass_g": m, "angle_deg": angle }))
+        .collect();
+    assert_eq!(entered, json!(want), "each kit weight on its own row");
+    shots(b, "job-trial-suggestion-used").await;
+    let rows = want.len();
+    for _ in 1..rows {
+        b.click("#step-runs .weights tbody tr:last-child button.remove-weight")
+            .await;
+    }
+    b.wait_until(
+        "the extra rows are removed",
+        "return document.querySelectorAll('#step-runs .weights tbody tr').length === 1",
+    )
+    .await;
 }

@@ -126,4 +126,45 @@ pub async fn kit_fit_is_drawn_where_it_goes(stand: &Stand, id: &str) {
     super::job::scroll_to(b, ".plane-pics").await;
     shots(b, "job-kit-fit").await;
     super::steps::fits_a_tablet(b, "kit fit").await;
+    report_says_the_places_and_the_iso_verdict(stand, &service).await;
+}
+
+/// (Item 6) The kit job's report: each weight's fixed place, the kit weights to
+/// fit, and the result against ISO 21940-11 from the rotor data.
+async fn report_says_the_places_and_the_iso_verdict(stand: &Stand, service: &Value) {
+    let b = &stand.browser;
+    b.click("nav [data-step=\"report\"]").await;
+    b.wait_for("#step-report section.report-weights td.place")
+        .await;
+    let got = js(
+        b,
+        "return [[...document.querySelectorAll('#step-report section.report-weights tbody tr')].map((r) => [...r.cells].map((c) => c.textContent)), \
+                 document.querySelector('#step-report .report-answer').innerText]",
+    )
+    .await;
+    let rows = got[0].as_array().unwrap();
+    // The trials of kit.rs: inboard (12 places) at 0°, on place 0; outboard at 120°, between its places.
+    assert_eq!(rows.len(), 2, "{got}");
+    assert_eq!(rows[0][1], "inboard");
+    assert_eq!(rows[0][5], "0", "{got}");
+    assert_eq!(rows[1][1], "outboard");
+    assert_eq!(
+        rows[1][5], "–",
+        "120° is none of 0 40 100 160 220 290: {got}"
+    );
+    let answer = got[1].as_str().unwrap();
+    let iso = &service["iso_21940"];
+    let word = |k: &str| match iso[k].as_bool() {
+        Some(true) => "pass",
+        Some(false) => "fail",
+        None => "–",
+    };
+    let want = format!(
+        "ISO 21940-11 {GRADE}: {} as measured, {} once corrected (95 %)",
+        word("pass"),
+        word("after_correction_pass")
+    );
+    assert!(answer.contains(&want), "{answer:?} should say {want:?}");
+    assert!(answer.contains("Weights to fit"), "{answer}");
+    b.click("nav [data-step=\"solve\"]").await;
 }

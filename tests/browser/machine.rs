@@ -47,7 +47,47 @@ pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &S
         json!([2, 2 * jobs.len()]),
         "before and after, a point per job"
     );
+    trend_is_labelled_with_the_jobs_dates(b, jobs).await;
     super::job::scroll_to(b, "h3").await;
     shots(b, "job-machine-jobs").await;
     super::steps::fits_a_tablet(b, "machine jobs").await;
+}
+
+/// Under each point of the trend, the date its job was stored (the time too
+/// when jobs share a day), every label inside the plot and none over another.
+async fn trend_is_labelled_with_the_jobs_dates(b: &super::Browser, jobs: &[serde_json::Value]) {
+    let mut stamps: Vec<&str> = jobs
+        .iter()
+        .map(|j| j["created_at"].as_str().unwrap())
+        .collect();
+    stamps.sort();
+    let labels = js(
+        b,
+        "const svg = document.querySelector('svg.trend'); const box = svg.getBoundingClientRect(); \
+         const dates = [...svg.querySelectorAll('text.date')]; \
+         const rects = dates.map((t) => t.getBoundingClientRect()); \
+         return [dates.map((t) => [...t.querySelectorAll('tspan')].map((s) => s.textContent)), \
+                 rects.every((r) => r.left >= box.left && r.right <= box.right && r.bottom <= box.bottom), \
+                 rects.every((r, i) => i === 0 || rects[i - 1].right <= r.left), \
+                 svg.querySelector('text.axis-title').textContent]",
+    )
+    .await;
+    let shown = labels[0].as_array().unwrap();
+    assert_eq!(shown.len(), stamps.len(), "a date per job: {labels}");
+    for (label, stamp) in shown.iter().zip(&stamps) {
+        assert_eq!(label[0], json!(&stamp[..10]), "the day of {stamp}");
+        // The three jobs are stored on one day: the time tells them apart.
+        let time = label[1].as_str().expect("a time under the day");
+        assert!(
+            stamp[11..].starts_with(time) && time.len() >= 5,
+            "{time} for {stamp}"
+        );
+    }
+    assert_eq!(
+        labels[1],
+        json!(true),
+        "every date inside the plot: {labels}"
+    );
+    assert_eq!(labels[2], json!(true), "no date over another: {labels}");
+    assert!(labels[3].as_str().unwrap().contains("date"), "{labels}");
 }

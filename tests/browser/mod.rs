@@ -9,6 +9,7 @@ pub mod kit;
 pub mod kit_fit;
 pub mod kit_support;
 pub mod machine;
+pub mod multispeed;
 pub mod options;
 pub mod scenes;
 pub mod stand;

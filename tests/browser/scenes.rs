@@ -9,7 +9,6 @@ use super::form::{self, field, type_into, value_of};
 use super::job::{scroll_to, shots};
 use super::stand::{example_session, Stand};
 use super::steps::{fits_a_tablet, js};
-use super::Browser;
 
 /// (b, i) The machine page, coefficients pooled, a trim job with only a zero run read from CSV.
 pub async fn machine_page_and_trim_from_stored_coefficients(stand: &Stand, truth: &Value) {
@@ -144,33 +143,84 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     b.wait_for("#step-solve .identification td.critical").await;
     // The polar plots per speed are filtered to one speed at a time.
     assert_eq!(counts[2], json!(sensors));
+    super::multispeed::polar_filter_narrows_the_plots(b, session).await;
     scroll_to(b, ".bode-plots").await;
     shots(b, "job-bode").await;
     fits_a_tablet(b, "multi-speed corrections").await;
     super::options::each_option_reaches_the_request_and_changes_the_answer(b, session).await;
+    super::multispeed::a_check_run_is_drawn_on_each_bode_plot(stand, id, session).await;
 }
 
-/// The page weighs under 250 kB and asks nothing of any other host.
-pub async fn the_form_weighs_little_and_asks_nothing_of_other_hosts(b: &Browser) {
+/// The page weighs under 250 kB and asks nothing of any other host, measured
+/// on a fresh load: every file of `static/` is loaded (none lazily, so the sum
+/// is the whole form), no request leaves the service, no file names another
+/// host, and the service's Content-Security-Policy forbids the browser to try.
+pub async fn the_form_weighs_little_and_asks_nothing_of_other_hosts(stand: &Stand) {
+    let b = &stand.browser;
+    b.client.goto("about:blank").await.unwrap();
+    b.client.goto(&stand.server.url("/")).await.unwrap();
+    b.wait_for("nav [data-step=\"setup\"]").await;
     let got = js(
         b,
         "const all = performance.getEntriesByType('resource'); \
          const nav = performance.getEntriesByType('navigation')[0]; \
+         const files = all.filter((e) => e.initiatorType !== 'fetch' && e.initiatorType !== 'xmlhttprequest'); \
          return [all.filter((e) => !e.name.startsWith(location.origin + '/')).map((e) => e.name), \
-                 all.filter((e) => e.initiatorType !== 'fetch').reduce((s, e) => s + e.decodedBodySize, nav.decodedBodySize), \
-                 all.filter((e) => e.initiatorType !== 'fetch').length]",
+                 files.reduce((s, e) => s + e.decodedBodySize, nav.decodedBodySize), \
+                 files.map((e) => new URL(e.name).pathname).sort()]",
     )
     .await;
     assert_eq!(got[0], json!([]), "requests outside the service");
-    let bytes = got[1].as_f64().unwrap();
-    assert!(
-        bytes > 50_000.0 && bytes < 250_000.0,
-        "page weight {bytes} bytes"
+    let bytes = got[1].as_u64().expect("bytes");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("static");
+    let mut files = Vec::new();
+    let mut on_disk = 0;
+    for dir in [root.clone(), root.join("js")] {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_file() {
+                let text = std::fs::read_to_string(&path).unwrap();
+                on_disk += text.len() as u64;
+                let other = text
+                    .match_indices("//")
+                    .filter(|(i, _)| {
+                        text[..*i].ends_with("http:") || text[..*i].ends_with("https:")
+                    })
+                    .map(|(i, _)| &text[i.saturating_sub(6)..(i + 40).min(text.len())])
+                    .find(|u| !u.contains("www.w3.org/2000/svg"));
+                assert_eq!(other, None, "{} names another host", path.display());
+                let rel = path
+                    .strip_prefix(&root)
+                    .unwrap()
+                    .to_str()
+                    .unwrap()
+                    .replace('\\', "/");
+                if rel != "index.html" {
+                    files.push(format!("/static/{rel}"));
+                }
+            }
+        }
+    }
+    files.sort();
+    assert_eq!(got[2], json!(files), "the page loads every file of static/");
+    println!(
+        "page weight: {bytes} bytes in {} files and the page ({on_disk} bytes on disk)",
+        files.len()
     );
-    assert!(
-        got[2].as_u64().unwrap() > 10,
-        "the form's files were counted: {got}"
-    );
+    assert!(bytes < 250_000, "page weight {bytes} bytes");
+    let page = reqwest::get(stand.server.url("/")).await.unwrap();
+    let csp = page.headers()["content-security-policy"]
+        .to_str()
+        .unwrap()
+        .to_string();
+    for rule in [
+        "default-src 'self'",
+        "connect-src 'self'",
+        "script-src 'self'",
+        "style-src 'self'",
+    ] {
+        assert!(csp.contains(rule), "{csp} lacks {rule}");
+    }
     b.client
         .find(Locator::Css("body"))
         .await

@@ -129,3 +129,13 @@ pub async fn fits_a_tablet(b: &Browser, what: &str) {
     );
     b.viewport(1280, 800).await;
 }
+
+/// The corrections step's summary: its class and the weight of its figures.
+pub async fn summary_look(b: &Browser) -> Value {
+    js(
+        b,
+        "const s = document.querySelector('#step-solve .summary'); \
+         return [s.className, [...s.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight)]",
+    )
+    .await
+}

@@ -141,6 +141,41 @@ pub fn run(
     json!({"id": id, "weights": weights, "readings": readings})
 }
 
+/// No runout at either sensor.
+pub const NO_RUNOUT: [Complex64; 2] = [Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
+
+/// The zero run and one trial per plane: 40 g at 0° in A, and 40 g typed at
+/// 90° in B but put at `90 + typo`.
+pub fn first_runs(
+    rotor: &Rotor,
+    conv: Conventions,
+    noise: &mut Noise,
+    runout: &[Complex64],
+    typo: f64,
+) -> Vec<Value> {
+    vec![
+        run(rotor, conv, "zero", &vec![], &vec![], noise, runout),
+        run(
+            rotor,
+            conv,
+            "trial A",
+            &vec![(0, 40.0, 0.0)],
+            &vec![(0, 40.0, 0.0)],
+            noise,
+            runout,
+        ),
+        run(
+            rotor,
+            conv,
+            "trial B",
+            &vec![(1, 40.0, 90.0)],
+            &vec![(1, 40.0, 90.0 + typo)],
+            noise,
+            runout,
+        ),
+    ]
+}
+
 pub fn session(conv: Conventions, runs: Vec<Value>) -> Value {
     json!({
         "name": "job", "machine": "ID-FAN-3", "conventions": conv,

@@ -3,9 +3,19 @@
 //! and at ten, with the options' noise model and with `samples` scatter, the
 //! 95 % ellipses hold the exact correction and `amplitude_95` holds the
 //! vibration that really remains in 93–97 % of realisations, and the mean
-//! correction lies within 0.1 standard deviations of the exact one wherever
-//! the answer does not flag most planes `trial_effect_small` (at one speed
-//! with 10–20 % trials it does, and the mean is 0.13–0.19 sd off there).
+//! correction lies within 0.1 standard deviations of the exact one in every
+//! case but one regime: one speed (four sensors, three planes: one complex
+//! degree of freedom beyond the planes) with trials of 10–20 %, where the
+//! answer flags most planes `trial_effect_small`. There the mean is 0.13–0.19
+//! sd off and is held within 0.25 sd instead, because no estimator tried can
+//! do better without an unbounded scatter (method 8.3, "one speed"): the
+//! estimator that removes the errors-in-variables bias in full divides by
+//! `ÂᴴÂ − M̂`, which is singular with appreciable probability there (on this
+//! rotor, 20,000 realisations: mean within 0.02 sd, but an rms error 50–460
+//! times the correction and a 95th percentile error 8–31 times it), and the
+//! estimators with finite moments are 0.6–1.6 sd off (least squares, Fuller's
+//! α-modification with α ≥ 0). Ten speeds, also flagged at 10 %, are not
+//! exempt.
 //!
 //! Binomial tolerance. A case's ellipse checks are realisations × planes,
 //! its `amplitude_95` checks realisations × rows; the checks of one
@@ -33,7 +43,10 @@
 //! `c·h·(1 − 2/9h + 2.326·√(2/9h))³ = 59.3`). A case passes when the sum is
 //! at most that (an observed root-mean-square bias of 0.157 sd): a method
 //! within 0.1 sd passes with probability above 99 %, one 0.2 sd off
-//! (`λ = 96`, mean 102, sd 20) fails with probability about 98 %.
+//! (`λ = 96`, mean 102, sd 20) fails with probability about 98 %. In the
+//! exempted regime the limit is the same quantile at 0.25 sd (`λ = 150`,
+//! `c = 1.96`, `h = 79.5`: 219.3): one 0.35 sd off (`λ = 294`, mean 300, sd
+//! 34) fails it with probability about 99 %.
 
 use fieldbal::balancing::model::{AngleDirection, Conventions, PhaseConvention, SolveOptions};
 use fieldbal::balancing::phasor::weight_in;
@@ -92,6 +105,8 @@ fn in_window((p, sd): (f64, f64)) -> bool {
 
 /// 99 % quantile of the summed `T²` of three planes each biased by 0.1 sd (module doc).
 const BIAS_T2_LIMIT: f64 = 59.3;
+/// The same at 0.25 sd, for the one exempted regime (module doc).
+const EXEMPT_T2_LIMIT: f64 = 219.3;
 
 /// Noisy realisations of one case. `samples`: each reading the mean of 6
 /// samples scattering 5 %/5° (about 2 %/2° for the mean, like the default).
@@ -234,14 +249,18 @@ fn calibration(samples: bool, seed: u64) {
         if !in_window(a) {
             failures.push(format!("{what}: amplitude_95 {a:?}"));
         }
-        // Where the answer itself says the trial is too small to trust (most
-        // planes carry `trial_effect_small`: one speed, 10 % trials, where a
-        // plane's estimate scatters by more than its own size), the mean of a
-        // ratio-like estimate is dominated by its tails; the regions must
-        // still hold there, the mean is asserted where the answer is trusted.
-        let trusted = t.flagged * 2 < t.ellipse.len() * t.checks.0;
-        if trusted && t2 > BIAS_T2_LIMIT {
-            failures.push(format!("{what}: mean error T² {t2:.1} > {BIAS_T2_LIMIT}"));
+        // The one exemption (module doc): one speed, where the rows exceed
+        // the planes by one, trials of 10–20 %, and the answer flags most
+        // planes `trial_effect_small`. There the mean is held within 0.25 sd.
+        let flagged = t.flagged * 2 >= t.ellipse.len() * t.checks.0;
+        let exempt = flagged && speeds.len() == 1 && effect <= 0.2;
+        let limit = if exempt {
+            EXEMPT_T2_LIMIT
+        } else {
+            BIAS_T2_LIMIT
+        };
+        if t2 > limit {
+            failures.push(format!("{what}: mean error T² {t2:.1} > {limit}"));
         }
         for (sum, x) in pooled.iter_mut().zip([e, a]) {
             sum.0 += x.0 / cases.len() as f64;

@@ -58,6 +58,131 @@ const FIXED_POINT_STEPS: usize = 4;
 /// noise is too large beside the signal for the fixed point to exist (`κ ≳ 1`).
 const CONTRACTION: f64 = 0.7;
 
+/// The pieces of the second-order bias that do not depend on the correction
+/// it is evaluated at: built once, evaluated at several corrections
+/// ([`Expansion::at`]; the bias is complex-affine in `C`).
+struct Expansion {
+    a: DMatrix<Complex64>,
+    b: DVector<Complex64>,
+    h_inv: DMatrix<Complex64>,
+    omega: DMatrix<Complex64>,
+    omega_bar: DMatrix<Complex64>,
+    z1: DMatrix<Complex64>,
+    z2: DMatrix<Complex64>,
+    /// `(1 − P_ii) g²`, `g²` and `d_i` per used row.
+    hat: Vec<f64>,
+    g2: Vec<f64>,
+    d: Vec<Complex64>,
+    mom: Vec<Vec<(f64, Complex64)>>,
+}
+
+impl Expansion {
+    /// `None` when the weighted problem is rank deficient (no unique
+    /// correction to correct) or square (see [`bias`]).
+    fn new(
+        t: &DMatrix<Complex64>,
+        y: &DMatrix<Complex64>,
+        cov: &[Vec<Matrix2<f64>>],
+        used_rows: &[usize],
+        row_weights: &[f64],
+        used_planes: &[usize],
+    ) -> Option<Expansion> {
+        let runs = y.ncols();
+        let (m, q) = (used_rows.len(), used_planes.len());
+        // As many rows as planes: the fit is exact (a ratio of readings) and
+        // without attenuation; what remains of the bias is the small term of
+        // non-circular noise, not worth giving up the exact fit for.
+        if m <= q || q == 0 {
+            return None;
+        }
+        let (tp, _) = svd_parts(t);
+        // ω_k over the used planes: how reading k of a row moves that row of W.
+        let omega = DMatrix::from_fn(q, runs, |j, k| match k {
+            0 => -tp.column(used_planes[j]).sum(),
+            _ => tp[(k - 1, used_planes[j])],
+        });
+        let a = DMatrix::from_fn(m, q, |i, j| {
+            let row = used_rows[i];
+            (1..runs)
+                .map(|k| (y[(row, k)] - y[(row, 0)]) * tp[(k - 1, used_planes[j])])
+                .sum::<Complex64>()
+                * row_weights[i]
+        });
+        let svd = a.clone().svd(true, true);
+        let (u, v_t) = (svd.u.as_ref()?, svd.v_t.as_ref()?);
+        let sv = &svd.singular_values;
+        if sv.min() <= RANK_TOLERANCE * sv.max() {
+            return None;
+        }
+        // H⁻¹ = V Σ⁻² Vᴴ from the SVD, never by inverting AᴴA.
+        let mut vs = v_t.adjoint();
+        for (mut col, &s) in vs.column_iter_mut().zip(sv.iter()) {
+            col /= Complex64::from(s * s);
+        }
+        let h_inv = vs * v_t;
+        let b = DVector::from_fn(m, |i, _| y[(used_rows[i], 0)] * row_weights[i]);
+        let mom: Vec<Vec<(f64, Complex64)>> = used_rows
+            .iter()
+            .map(|&row| cov[row].iter().take(runs).map(moments).collect())
+            .collect();
+        let g2: Vec<f64> = row_weights.iter().map(|g| g * g).collect();
+        let omega_bar = omega.map(|x| x.conj());
+        let hw = &h_inv * &omega_bar; // H⁻¹ ω̄_k, q × runs
+        let e: Vec<Complex64> = (0..runs)
+            .map(|k| omega.column(k).dot(&hw.column(k)))
+            .collect();
+        let z1 = a.map(|x| x.conj()) * (h_inv.transpose() * &omega); // ω_kᵀ H⁻¹ Āᵢᵀ
+        let z2 = &a * &hw; // A_i H⁻¹ ω̄_k
+        let hat = (0..m)
+            .map(|i| {
+                let p_ii: f64 = u.row(i).iter().map(|x| x.norm_sqr()).sum();
+                (1.0 - p_ii.min(1.0)) * g2[i]
+            })
+            .collect();
+        let d = (0..m)
+            .map(|i| (0..runs).map(|k| g2[i] * mom[i][k].0 * e[k]).sum())
+            .collect();
+        Some(Expansion {
+            a,
+            b,
+            h_inv,
+            omega,
+            omega_bar,
+            z1,
+            z2,
+            hat,
+            g2,
+            d,
+            mom,
+        })
+    }
+
+    /// The bias at correction `c` (module doc).
+    fn at(&self, c: &DVector<Complex64>) -> DVector<Complex64> {
+        let (m, runs) = (self.a.nrows(), self.omega.ncols());
+        let r = &self.a * c + &self.b;
+        let lambda: Vec<Complex64> = (0..runs)
+            .map(|k| self.omega.column(k).dot(c) + if k == 0 { 1.0 } else { 0.0 })
+            .collect();
+        let mut coef_omega = DVector::<Complex64>::zeros(runs); // multiplies Ω̄
+        let mut coef_a = DVector::<Complex64>::zeros(m); // multiplies Aᴴ
+        for i in 0..m {
+            let mut x1 = Complex64::from(0.0);
+            for k in 0..runs {
+                let (s, p) = self.mom[i][k];
+                // Σ_i (1 − P_ii) g² s λ_k ω̄_k, and X₂ = Σ g² r p̄ (A_i H⁻¹ ω̄_k) ω̄_k.
+                coef_omega[k] +=
+                    self.hat[i] * s * lambda[k] - self.g2[i] * r[i] * p.conj() * self.z2[(i, k)];
+                x1 += self.g2[i] * p * lambda[k] * self.z1[(i, k)];
+            }
+            // −A₀ᴴ diag(d) r₀ − X₁, both through Aᴴ.
+            coef_a[i] = -(self.d[i] * r[i]) - x1;
+        }
+        let inner = &self.omega_bar * coef_omega + self.a.adjoint() * coef_a;
+        -(&self.h_inv * inner)
+    }
+}
+
 /// The second-order bias `E[Ĉ − C]` of the least-squares correction `c`
 /// (same arguments as [`super::propagate`]), or `None` when the weighted
 /// problem is rank deficient (no unique correction to correct) or square.
@@ -70,76 +195,7 @@ pub fn bias(
     used_planes: &[usize],
     c: &DVector<Complex64>,
 ) -> Option<DVector<Complex64>> {
-    let runs = y.ncols();
-    let (m, q) = (used_rows.len(), used_planes.len());
-    // As many rows as planes: the fit is exact (a ratio of readings) and
-    // without attenuation; what remains of the bias is the small term of
-    // non-circular noise, not worth giving up the exact fit for.
-    if m <= q || q == 0 {
-        return None;
-    }
-    let (tp, _) = svd_parts(t);
-    // ω_k over the used planes: how reading k of a row moves that row of W.
-    let omega = DMatrix::from_fn(q, runs, |j, k| match k {
-        0 => -tp.column(used_planes[j]).sum(),
-        _ => tp[(k - 1, used_planes[j])],
-    });
-    let a = DMatrix::from_fn(m, q, |i, j| {
-        let row = used_rows[i];
-        (1..runs)
-            .map(|k| (y[(row, k)] - y[(row, 0)]) * tp[(k - 1, used_planes[j])])
-            .sum::<Complex64>()
-            * row_weights[i]
-    });
-    let svd = a.clone().svd(true, true);
-    let (u, v_t) = (svd.u.as_ref()?, svd.v_t.as_ref()?);
-    let sv = &svd.singular_values;
-    if sv.min() <= RANK_TOLERANCE * sv.max() {
-        return None;
-    }
-    // H⁻¹ = V Σ⁻² Vᴴ from the SVD, never by inverting AᴴA.
-    let mut vs = v_t.adjoint();
-    for (mut col, &s) in vs.column_iter_mut().zip(sv.iter()) {
-        col /= Complex64::from(s * s);
-    }
-    let h_inv = vs * v_t;
-    let b = DVector::from_fn(m, |i, _| y[(used_rows[i], 0)] * row_weights[i]);
-    let r = &a * c + b;
-    let lambda: Vec<Complex64> = (0..runs)
-        .map(|k| omega.column(k).dot(c) + if k == 0 { 1.0 } else { 0.0 })
-        .collect();
-    let mom: Vec<Vec<(f64, Complex64)>> = used_rows
-        .iter()
-        .map(|&row| cov[row].iter().take(runs).map(moments).collect())
-        .collect();
-    let g2: Vec<f64> = row_weights.iter().map(|g| g * g).collect();
-    let omega_bar = omega.map(|x| x.conj());
-    let hw = &h_inv * &omega_bar; // H⁻¹ ω̄_k, q × runs
-    let e: Vec<Complex64> = (0..runs)
-        .map(|k| omega.column(k).dot(&hw.column(k)))
-        .collect();
-    let z1 = a.map(|x| x.conj()) * (h_inv.transpose() * &omega); // ω_kᵀ H⁻¹ Āᵢᵀ
-    let z2 = &a * &hw; // A_i H⁻¹ ω̄_k
-
-    let mut coef_omega = DVector::<Complex64>::zeros(runs); // multiplies Ω̄
-    let mut coef_a = DVector::<Complex64>::zeros(m); // multiplies Aᴴ
-    for i in 0..m {
-        let p_ii: f64 = u.row(i).iter().map(|x| x.norm_sqr()).sum();
-        let mut d = Complex64::from(0.0);
-        let mut x1 = Complex64::from(0.0);
-        for k in 0..runs {
-            let (s, p) = mom[i][k];
-            // Σ_i (1 − P_ii) g² s λ_k ω̄_k, and X₂ = Σ g² r p̄ (A_i H⁻¹ ω̄_k) ω̄_k.
-            coef_omega[k] += (1.0 - p_ii.min(1.0)) * g2[i] * s * lambda[k]
-                - g2[i] * r[i] * p.conj() * z2[(i, k)];
-            d += g2[i] * s * e[k];
-            x1 += g2[i] * p * lambda[k] * z1[(i, k)];
-        }
-        // −A₀ᴴ diag(d) r₀ − X₁, both through Aᴴ.
-        coef_a[i] = -(d * r[i]) - x1;
-    }
-    let inner = omega_bar * coef_omega + a.adjoint() * coef_a;
-    Some(-(h_inv * inner))
+    Expansion::new(t, y, cov, used_rows, row_weights, used_planes).map(|x| x.at(c))
 }
 
 /// The correction `c` of the used `rows` (with `weights`) and `planes`, less
@@ -164,10 +220,11 @@ pub fn debiased(
     if !least_squares || bounded || !(stated || measured) {
         return c;
     }
-    let bias_at = |at: &DVector<Complex64>| {
-        bias(&checked.t, &checked.y, cov, rows, weights, planes, at)
-            .filter(|b| b.iter().all(|z| z.re.is_finite() && z.im.is_finite()))
+    let Some(expansion) = Expansion::new(&checked.t, &checked.y, cov, rows, weights, planes) else {
+        return c;
     };
+    let finite = |b: &DVector<Complex64>| b.iter().all(|z| z.re.is_finite() && z.im.is_finite());
+    let bias_at = |at: &DVector<Complex64>| Some(expansion.at(at)).filter(finite);
     let Some(first) = bias_at(&c) else {
         return c;
     };
@@ -176,6 +233,9 @@ pub fn debiased(
     // estimate is the fixed point `C* = Ĉ − b(C*)` (method 8.3; Fuller 1987 §2.2's
     // corrected estimator in the many-row limit), found by iterating while
     // the steps shrink; where they do not, the one-step correction stays.
+    // Not solved directly (`b` is affine in `C`): where the iteration does
+    // not contract, `ÂᴴÂ − M` is near singular and the exact fixed point
+    // scatters without bound (method 8.3, the one-speed note).
     let mut est = &c - &first;
     let mut step = first.norm();
     for _ in 0..FIXED_POINT_STEPS {

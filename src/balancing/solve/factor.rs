@@ -109,10 +109,9 @@ impl ThinSvd {
 /// `m × q` matrix again.
 ///
 /// For a tall `A = Q R` the `q × q` `R` carries everything but the left
-/// vectors: `Q` preserves inner products, so Gram–Schmidt on `R`'s columns
-/// gives the same significance factors, and scaling `A`'s columns to unit
-/// norm is scaling `R`'s (`A D = Q (R D)`), so `cond(A D)` and the right
-/// singular vectors of `A D` come from the small `R D`.
+/// vectors: scaling `A`'s columns to unit norm is scaling `R`'s
+/// (`A D = Q (R D)`), so `cond(A D)` and the right singular vectors of `A D`
+/// come from the small `R D`.
 #[derive(Debug, Clone)]
 pub struct Factored {
     /// `Q` of `A = Q R` (`m × q`) when `A` has more rows than columns; else `None`, and `r` is `A`.
@@ -183,7 +182,7 @@ impl Factored {
         }
     }
 
-    /// `R`'s columns: the Gram matrix of `A`'s (`AᴴA = RᴴR`) in `q` rows.
+    /// `R` (or `A` when not tall): `AᴴA = RᴴR` in `q` rows.
     pub fn small(&self) -> &DMatrix<Complex64> {
         &self.r
     }

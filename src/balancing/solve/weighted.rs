@@ -121,10 +121,12 @@ pub fn solve_checked<'a>(
     let noise = uncertainty::noise_options(options)?;
 
     let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
-    // One QR of `A` for the factors, the solve, the report and the
-    // uncertainty; Gram–Schmidt on `R` is Gram–Schmidt on `A` (issue 15).
+    // One QR of `A` for the solve, the report and the uncertainty (issue 15).
+    // The significance factors stay on `A` itself: their first pivot is a
+    // tie of unit norms that rounding decides, and on `R` rounding decides
+    // it differently, which changes every factor.
     let factor_all = Factored::of(&a_all);
-    let factors = significance_factors(factor_all.small());
+    let factors = significance_factors(&a_all);
     let drop = options.drop_dependent_planes.unwrap_or(false);
     let (planes, dropped): (Vec<usize>, Vec<usize>) = if drop {
         let keep = |k: &usize| factors[*k] >= SIGNIFICANCE_THRESHOLD;

@@ -70,8 +70,8 @@ pub fn influence_and_pinv(
     let t_pinv = svd
         .pseudo_inverse(0.0)
         .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
-    Ok((
-        crate::balancing::factor::cmul(&changes(checked), &t_pinv),
-        t_pinv,
-    ))
+    // nalgebra's own product, not `factor::cmul`: `W` stays bit for bit what it
+    // was, and with it the rounding that decides the significance factors'
+    // first pivot (a tie of unit norms).
+    Ok((changes(checked) * &t_pinv, t_pinv))
 }

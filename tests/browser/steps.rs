@@ -130,12 +130,22 @@ pub async fn fits_a_tablet(b: &Browser, what: &str) {
     b.viewport(1280, 800).await;
 }
 
-/// The corrections step's summary: its class and the weight of its figures.
-pub async fn summary_look(b: &Browser) -> Value {
-    js(
+/// The corrections step's summary is greyed, its figures plain, exactly when a
+/// correction above it is (a sure answer keeps its bold figures); returns which.
+pub async fn summary_follows_the_doubts(b: &Browser) -> bool {
+    let got = js(
         b,
         "const s = document.querySelector('#step-solve .summary'); \
-         return [s.className, [...s.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight)]",
+         return [s.className, [...s.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight), \
+                 document.querySelectorAll('#step-solve table.corrections tr.doubtful').length > 0]",
     )
-    .await
+    .await;
+    let doubtful = got[2] == json!(true);
+    let want = if doubtful {
+        json!(["summary unsure", ["400", "400", "400"], true])
+    } else {
+        json!(["summary", ["700", "700", "700"], false])
+    };
+    assert_eq!(got, want, "the summary as sure as the corrections");
+    doubtful
 }

@@ -189,6 +189,12 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
     browser::job::shots(b, "solution-warning").await;
     browser::job::scroll_to(b, "#step-solve .summary").await;
     browser::job::shots(b, "solution-warning-summary").await;
+    // The report's first page says the same: greyed, why, and what to do.
+    b.click("nav [data-step=\"report\"]").await;
+    let answer = b.text("#step-report .report-answer .doubts").await;
+    assert!(answer.contains("Repeat the trial run"), "{answer}");
+    b.wait_for("#step-report .report-answer .summary.unsure")
+        .await;
     stand.stop().await;
 }
 

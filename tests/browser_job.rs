@@ -23,7 +23,8 @@ use browser::scenes::{
 };
 use browser::stand::{example_session, Stand};
 use browser::steps::{
-    fits_a_tablet, grid_header_and_actions_are_sticky, js, named, service_trim, solve, stored_id,
+    a_plane_the_trim_leaves_shows_nothing_to_add, fits_a_tablet,
+    grid_header_and_actions_are_sticky, js, named, service_trim, solve, stored_id,
     summary_follows_the_doubts, type_and_store, typed_mistakes_are_refused_with_the_reason,
 };
 use serde_json::{json, Value};
@@ -215,18 +216,7 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     b.click("#step-solve button.solve").await;
     let verdict = b.text(".verdict").await;
     assert!(verdict.starts_with("Within tolerance"), "{verdict}");
-    // A plane the trim leaves as it is shows no weight and no angle to read.
-    let nothing = js(
-        b,
-        "return [...document.querySelectorAll('#step-solve .trim li')].filter((l) => l.textContent.includes('nothing to add')) \
-           .map((l) => document.querySelector(`#step-solve table.corrections tr[data-plane=\"${l.dataset.plane}\"]`)) \
-           .map((r) => [r.className, r.querySelector('.corr-mass').textContent, r.querySelector('.corr-angle').textContent])",
-    )
-    .await;
-    assert!(!nothing.as_array().unwrap().is_empty(), "{nothing}");
-    for row in nothing.as_array().unwrap() {
-        assert_eq!(row, &json!(["nothing", "nothing to add", "–"]), "{nothing}");
-    }
+    a_plane_the_trim_leaves_shows_nothing_to_add(b).await;
     // Sure or greyed, the summary follows the corrections (both cases fixed: browser_import).
     summary_follows_the_doubts(b).await;
     shots(b, "job-within-tolerance").await;

@@ -149,3 +149,19 @@ pub async fn summary_follows_the_doubts(b: &Browser) -> bool {
     assert_eq!(got, want, "the summary as sure as the corrections");
     doubtful
 }
+
+/// A plane the trim leaves as it is (its words say "nothing to add") shows no
+/// weight and no angle to read in the corrections table.
+pub async fn a_plane_the_trim_leaves_shows_nothing_to_add(b: &Browser) {
+    let nothing = js(
+        b,
+        "return [...document.querySelectorAll('#step-solve .trim li')].filter((l) => l.textContent.includes('nothing to add')) \
+           .map((l) => document.querySelector(`#step-solve table.corrections tr[data-plane=\"${l.dataset.plane}\"]`)) \
+           .map((r) => [r.className, r.querySelector('.corr-mass').textContent, r.querySelector('.corr-angle').textContent])",
+    )
+    .await;
+    assert!(!nothing.as_array().unwrap().is_empty(), "{nothing}");
+    for row in nothing.as_array().unwrap() {
+        assert_eq!(row, &json!(["nothing", "nothing to add", "–"]), "{nothing}");
+    }
+}

@@ -189,11 +189,18 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
     browser::job::shots(b, "solution-warning").await;
     browser::job::scroll_to(b, "#step-solve .summary").await;
     browser::job::shots(b, "solution-warning-summary").await;
+    // The report's first page says the same: greyed, why, and what to do.
+    b.click("nav [data-step=\"report\"]").await;
+    let answer = b.text("#step-report .report-answer .doubts").await;
+    assert!(answer.contains("Repeat the trial run"), "{answer}");
+    b.wait_for("#step-report .report-answer .summary.unsure")
+        .await;
     stand.stop().await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
+async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and_a_wide_one_greys_the_summary(
+) {
     let stand = Stand::start().await;
     let b = &stand.browser;
     // The contract's example correction, rendered by the page's own module.
@@ -207,7 +214,16 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
           const lost = { plane: 'A', mass_g: 1486, angle_deg: 119.2, uncertainty: { mass_g: [0, 10304], angle_deg: [0, 360] } };
           const table = m.residualTable({ predicted_residual: [
             { speed_rpm: 1480, sensor: '1H', unit: 'um_pp', amplitude_before: 88, amplitude: 4.1, phase_deg: 213, amplitude_95: 7.9, used: true } ] });
-          done([m.uncertaintyText(c), m.uncertaintyText(wrap), m.uncertaintyText(lost), table.querySelector('td.after95').textContent]);
+          // The summary of an answer with a tight correction, then with a wide one, as the page shows them.
+          const look = (corr) => {
+            const box = document.body.appendChild(m.summaryBox({ corrections: [corr], warnings: [], condition_number: 1,
+              summary: { rms_before: 88, rms_after: 4.1, max_before: 90, max_after: 5 } }));
+            const v = [...box.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight);
+            box.remove();
+            return [box.className, v];
+          };
+          done([m.uncertaintyText(c), m.uncertaintyText(wrap), m.uncertaintyText(lost), table.querySelector('td.after95').textContent,
+                look(c), look(lost)]);
         });
     "#;
     let got = b
@@ -221,7 +237,9 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus() {
             "52.4 g ± 4.1 g, 141.0° ± 4.8°",
             "10.0 g ± 1.5 g, 359.0° ± 4.0°",
             "1486 g (0 to 10304 g), angle undetermined",
-            "≤ 7.9"
+            "≤ 7.9",
+            ["summary", ["700", "700", "700"]],
+            ["summary unsure", ["400", "400", "400"]]
         ])
     );
     stand.stop().await;

@@ -9,7 +9,7 @@ import { fmt, fmtAngle, unitLabel } from "./num.js";
 import { state, rows, readingFor } from "./state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, summaryBox, warningsBox } from "./solve.js";
-import { verdict, trimWords, runChecks, planePictures } from "./answer.js";
+import { verdict, trimWords, runChecks, planePictures, doubts } from "./answer.js";
 import { plotsSection } from "./plots.js";
 
 // The kit weights to fit, when the solution has a discrete fit (`fit`).
@@ -84,6 +84,7 @@ function answerSection(sol) {
     verdict(sol),
     trimWords(sol),
     correctionsTable(sol),
+    doubts(sol),
     fitTable(sol),
     summaryBox(sol),
     isoVerdict(sol),

@@ -40,14 +40,18 @@ export function correctionsTable(solution) {
   const words = angleWords(solution.conventions || state.setup.conventions);
   return h("table", { class: "corrections" },
     h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, `Angle (${words})`), h("th", {}, "95 % uncertainty"), h("th", {}, "Unbalance"), h("th", {}, "On fixed places"))),
-    h("tbody", {}, solution.corrections.map((c) => h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : null, title: doubt(solution, c) || null },
+    h("tbody", {}, solution.corrections.map((c) => {
+      // A trim that leaves a plane as it is: no weight, so no angle to read (the trim words say so).
+      const nothing = solution.from_run && c.mass_g < 0.05;
+      return h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : nothing ? "nothing" : null, title: doubt(solution, c) || null },
       h("th", { class: "corr-plane" }, c.plane),
-      h("td", { class: "corr-mass" }, `${fmt(c.mass_g, 1)} g`),
-      h("td", { class: "corr-angle" }, fmtAngle(c.angle_deg)),
+      h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g, 1)} g`),
+      h("td", { class: "corr-angle" }, nothing ? "–" : fmtAngle(c.angle_deg)),
       h("td", { class: "corr-uncertainty" }, c.uncertainty ? uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]) : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
-      h("td", { class: "corr-split" }, c.split ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
-    ))),
+      h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
+      );
+    })),
   );
 }
 

@@ -130,12 +130,38 @@ pub async fn fits_a_tablet(b: &Browser, what: &str) {
     b.viewport(1280, 800).await;
 }
 
-/// The corrections step's summary: its class and the weight of its figures.
-pub async fn summary_look(b: &Browser) -> Value {
-    js(
+/// The corrections step's summary is greyed, its figures plain, exactly when a
+/// correction above it is (a sure answer keeps its bold figures); returns which.
+pub async fn summary_follows_the_doubts(b: &Browser) -> bool {
+    let got = js(
         b,
         "const s = document.querySelector('#step-solve .summary'); \
-         return [s.className, [...s.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight)]",
+         return [s.className, [...s.querySelectorAll('.big .value')].map((e) => getComputedStyle(e).fontWeight), \
+                 document.querySelectorAll('#step-solve table.corrections tr.doubtful').length > 0]",
     )
-    .await
+    .await;
+    let doubtful = got[2] == json!(true);
+    let want = if doubtful {
+        json!(["summary unsure", ["400", "400", "400"], true])
+    } else {
+        json!(["summary", ["700", "700", "700"], false])
+    };
+    assert_eq!(got, want, "the summary as sure as the corrections");
+    doubtful
+}
+
+/// A plane the trim leaves as it is (its words say "nothing to add") shows no
+/// weight and no angle to read in the corrections table.
+pub async fn a_plane_the_trim_leaves_shows_nothing_to_add(b: &Browser) {
+    let nothing = js(
+        b,
+        "return [...document.querySelectorAll('#step-solve .trim li')].filter((l) => l.textContent.includes('nothing to add')) \
+           .map((l) => document.querySelector(`#step-solve table.corrections tr[data-plane=\"${l.dataset.plane}\"]`)) \
+           .map((r) => [r.className, r.querySelector('.corr-mass').textContent, r.querySelector('.corr-angle').textContent])",
+    )
+    .await;
+    assert!(!nothing.as_array().unwrap().is_empty(), "{nothing}");
+    for row in nothing.as_array().unwrap() {
+        assert_eq!(row, &json!(["nothing", "nothing to add", "–"]), "{nothing}");
+    }
 }

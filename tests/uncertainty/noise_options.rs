@@ -7,7 +7,7 @@ use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 
-use super::{estimate, noisy, session, solve, Rotor, LAG_AGAINST, LEAD_WITH};
+use super::{c, estimate, noisy, session, solve, Rotor, LAG_AGAINST, LEAD_WITH};
 
 /// `n` samples around each exact reading, with the options' noise model at `pct` %/`deg`°,
 /// recentred so that their mean is the reading.
@@ -280,4 +280,46 @@ fn a_trial_too_small_for_its_noise_says_how_much_to_enlarge_it_and_that_much_is_
             "told {told:?}, still: {w:?}"
         );
     }
+}
+
+#[test]
+fn a_plane_too_like_the_others_is_told_to_be_told_apart_not_only_to_take_a_heavier_trial() {
+    // Three planes; P2 acts almost as P0 + P1 (significance well under 0.2),
+    // each trial moving the vibration by as much as it is: the trials are not
+    // small, the part of P2's effect that is its own is.
+    let cols = [
+        [c(1.2, 0.8), c(0.3, -0.4), c(-0.5, 1.1), c(0.9, 0.2)],
+        [c(2.0, -0.6), c(0.7, 0.9), c(0.4, 0.5), c(-1.3, 0.6)],
+    ];
+    let w = nalgebra::DMatrix::from_fn(4, 3, |a, j| match j {
+        2 => (cols[0][a] + cols[1][a]) * 0.5 + c(0.004, -0.003) * (a as f64 - 1.5),
+        _ => cols[j][a],
+    });
+    let c_true = nalgebra::DVector::from_vec(vec![c(30.0, 10.0), c(-12.0, 20.0), c(5.0, -25.0)]);
+    let rotor = Rotor::with_trials(w.clone(), c_true.clone(), -(&w * &c_true), 1.0);
+    let s = session(LAG_AGAINST, &rotor.trial, &rotor.readings(), None);
+    let sol = solve(&s, &options(2.0, 2.0));
+    assert!(
+        sol.warnings.iter().any(|w| w.code == "ill_conditioned"),
+        "{:?}",
+        sol.warnings
+    );
+    let said = warnings(&sol, "trial_effect_small", "P2");
+    assert!(
+        said.iter()
+            .any(|m| m.contains("tells plane P2 from the others")
+                && m.contains("the sensors see it much like the other planes together")
+                && m.contains(" times the trial mass")),
+        "{said:?}"
+    );
+    // A plane the others do not mimic is told only to take a heavier trial.
+    let small = Rotor::two_plane(0.05);
+    let s = session(LAG_AGAINST, &small.trial, &small.readings(), None);
+    let sol = solve(&s, &options(2.0, 2.0));
+    let said = warnings(&sol, "trial_effect_small", "P0");
+    assert!(
+        said.iter().any(|m| m.contains(" times the trial mass")),
+        "{said:?}"
+    );
+    assert!(said.iter().all(|m| !m.contains("tells plane")), "{said:?}");
 }

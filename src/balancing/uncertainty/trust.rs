@@ -21,12 +21,17 @@
 //! where below the limit it is within 0.1 sd. So the warning fires there and
 //! asks for `√(κ / KAPPA_LIMIT)` times the trial mass, which brings `κ` under
 //! the limit (`κ ∝ 1/m²`; tested in tests/uncertainty/noise_options.rs).
+//! `κ` is large for a large trial too where the sensors see the plane much
+//! like a combination of the others (little of its effect is its own, however
+//! heavy the trial): there the warning says so and asks first for a sensor or
+//! speed that tells the planes apart.
 
-use nalgebra::Matrix2;
+use nalgebra::{DMatrix, Matrix2};
+use num_complex::Complex64;
 
 use super::Propagation;
 use crate::balancing::solution::{Solution, Warning};
-use crate::balancing::solve::Fit;
+use crate::balancing::solve::{weighted_problem, Fit};
 
 /// Largest `κ` (noise over signal energy of a plane's influence coefficients)
 /// at which the first-order 95 % figures are still calibrated (module doc).
@@ -77,19 +82,62 @@ pub fn kappa(fit: &Fit, prop: &Propagation) -> Vec<Option<f64>> {
 /// Add `trial_effect_small` for every plane whose `κ` exceeds
 /// [`KAPPA_LIMIT`], merging with an existing one.
 pub fn warn_untrusted(fit: &Fit, kappas: &[Option<f64>], solution: &mut Solution) {
-    for (&k, &j) in kappas.iter().zip(&fit.planes) {
+    // The weighted problem is formed again only when some plane is flagged.
+    let mut a = None;
+    for (col, (&k, &j)) in kappas.iter().zip(&fit.planes).enumerate() {
         let Some(k) = k.filter(|&k| k > KAPPA_LIMIT) else {
             continue;
         };
+        let a = a.get_or_insert_with(|| {
+            weighted_problem(&fit.checked, &fit.w, &fit.selection, &fit.planes).0
+        });
         let id = fit.checked.session.planes[j].id.clone();
+        let enlarge = (k / KAPPA_LIMIT).sqrt();
+        // `1/√κ` is the effect-to-noise ratio of the part of the plane's effect
+        // that the other planes do not also produce (module doc). Where that
+        // part is a small share of the whole (the sensors see the plane much
+        // like a combination of the others), the trial is not what is small:
+        // telling the planes apart helps as much as a heavier trial.
+        let share = own_share(a, col);
+        let (why, remedy) = if share < DEPENDENT_SHARE {
+            (
+                format!(" (only {:.0} % of plane {id}'s effect is its own: the sensors see it much like the other planes together)", 100.0 * share),
+                format!("add a sensor or speed that tells plane {id} from the others, solve without it, or repeat the trial run with about {enlarge:.1} times the trial mass"),
+            )
+        } else {
+            (
+                String::new(),
+                format!("repeat the trial run with about {enlarge:.1} times the trial mass, or at a larger radius"),
+            )
+        };
         let text = format!(
-            "the trial weight in plane {id} is too small for the readings' noise: over all sensors and speeds its effect is only {:.1} times the noise of that effect (from amplitude_noise_pct, phase_noise_deg or the samples' scatter), and below {:.1} times the correction for {id} scatters too widely to be worth fitting (its interval is widened for this, but wide): repeat the trial run with about {:.1} times the trial mass, or at a larger radius",
+            "the trial weight in plane {id} is too small for the readings' noise: over all sensors and speeds, the part of its effect that the other planes do not also produce is only {:.1} times its noise{why} (from amplitude_noise_pct, phase_noise_deg or the samples' scatter), and below {:.1} times the correction for {id} scatters too widely to be worth fitting (its interval is widened for this, but wide): {remedy}",
             1.0 / k.sqrt(),
             1.0 / KAPPA_LIMIT.sqrt(),
-            (k / KAPPA_LIMIT).sqrt()
         );
         trial_warning(&mut solution.warnings, id, text);
     }
+}
+
+/// Below this share of its own (a sine of 0.5: 30° from the others' span) a
+/// plane's dependence on the others at least halves its effect-to-noise ratio.
+const DEPENDENT_SHARE: f64 = 0.5;
+
+/// The share of column `col` of `a` that the other columns do not span:
+/// `‖(I − P) a_col‖ / ‖a_col‖`, `P` the projection on the others (through QR).
+fn own_share(a: &DMatrix<Complex64>, col: usize) -> f64 {
+    let x = a.column(col).into_owned();
+    let norm = x.norm();
+    if norm == 0.0 {
+        return 0.0;
+    }
+    let others = a.clone().remove_column(col);
+    if others.ncols() == 0 {
+        return 1.0;
+    }
+    let q = others.qr().q();
+    let own = &x - &q * (q.adjoint() * &x);
+    (own.norm() / norm).min(1.0)
 }
 
 /// Give plane `id` a `trial_effect_small` warning saying `text`, appended to

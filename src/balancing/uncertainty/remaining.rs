@@ -23,43 +23,10 @@
 //! planes `R̂ ≡ 0`, `Σ_v = 0`, and this is exactly the pivot bound. Checked on
 //! the rotor model of tests/uncertainty/eiv.rs (93–97 % within binomial error).
 
-use nalgebra::{DMatrix, Matrix2};
+use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 use super::amplitude_95;
-
-/// Real covariance of `Σ_j w_j C_j` from the joint real covariance of the
-/// corrections (`2q × 2q`, ordered Re C₀, Im C₀, Re C₁, …).
-pub fn through_correction(w: &[Complex64], full: &DMatrix<f64>) -> Matrix2<f64> {
-    // Jacobian rows: Re(w C) = Re w·x − Im w·y, Im(w C) = Im w·x + Re w·y.
-    let q = w.len();
-    let jac = |o: usize, col: usize| {
-        let z = w[col / 2];
-        match (o, col % 2) {
-            (0, 0) => z.re,
-            (0, _) => -z.im,
-            (_, 0) => z.im,
-            _ => z.re,
-        }
-    };
-    let mut out = Matrix2::zeros();
-    for o in 0..2 {
-        for p in 0..2 {
-            let mut s = 0.0;
-            for i in 0..2 * q {
-                let ji = jac(o, i);
-                if ji == 0.0 {
-                    continue;
-                }
-                for k in 0..2 * q {
-                    s += ji * full[(i, k)] * jac(p, k);
-                }
-            }
-            out[(o, p)] = s;
-        }
-    }
-    out
-}
 
 /// The 95 % bound of the remaining amplitude at a row: prediction `r_hat`,
 /// covariance `prediction` of `R̂` and `through_c` of `W_a dC` (module doc).
@@ -84,6 +51,78 @@ pub fn remaining_amplitude_95(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::DMatrix;
+
+    /// Reference form (what `propagate` reads off its products, issue 15): real covariance of `Σ_j w_j C_j` from the joint real covariance of the
+    /// corrections (`2q × 2q`, ordered Re C₀, Im C₀, Re C₁, …).
+    fn through_correction(w: &[Complex64], full: &DMatrix<f64>) -> Matrix2<f64> {
+        // Jacobian rows: Re(w C) = Re w·x − Im w·y, Im(w C) = Im w·x + Re w·y.
+        let q = w.len();
+        let jac = |o: usize, col: usize| {
+            let z = w[col / 2];
+            match (o, col % 2) {
+                (0, 0) => z.re,
+                (0, _) => -z.im,
+                (_, 0) => z.im,
+                _ => z.re,
+            }
+        };
+        let mut out = Matrix2::zeros();
+        for o in 0..2 {
+            for p in 0..2 {
+                let mut s = 0.0;
+                for i in 0..2 * q {
+                    let ji = jac(o, i);
+                    if ji == 0.0 {
+                        continue;
+                    }
+                    for k in 0..2 * q {
+                        s += ji * full[(i, k)] * jac(p, k);
+                    }
+                }
+                out[(o, p)] = s;
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn the_propagation_gives_each_rows_covariance_through_the_correction() {
+        // Two planes, one trial each, five rows: W from the runs (method 2.1),
+        // and every row's `w K wᴴ`, `w J wᵀ` as the reference form gives it.
+        let c = |re: f64, im: f64| Complex64::new(re, im);
+        let t =
+            DMatrix::from_row_slice(2, 2, &[c(10.0, 0.0), c(0.0, 0.0), c(0.0, 0.0), c(0.0, 8.0)]);
+        let w = DMatrix::from_fn(5, 2, |a, j| {
+            c(1.0 + a as f64 * 0.3, 0.5 - j as f64 + 0.1 * a as f64)
+        });
+        let y0 = DMatrix::from_fn(5, 1, |a, _| c(20.0 - 3.0 * a as f64, 4.0 + a as f64));
+        let y = DMatrix::from_fn(5, 3, |a, k| match k {
+            0 => y0[(a, 0)],
+            _ => y0[(a, 0)] + w[(a, k - 1)] * t[(k - 1, k - 1)],
+        });
+        let cov: Vec<Vec<Matrix2<f64>>> = (0..5)
+            .map(|a| {
+                (0..3)
+                    .map(|k| Matrix2::new(1.0 + a as f64, 0.2, 0.2, 0.5 + k as f64))
+                    .collect()
+            })
+            .collect();
+        let rows: Vec<usize> = (0..5).collect();
+        let weights = vec![1.0, 2.0, 1.0, 0.5, 1.0];
+        let corr = nalgebra::DVector::from_vec(vec![c(-3.0, 1.0), c(2.0, -2.5)]);
+        let prop =
+            crate::balancing::uncertainty::propagate(&t, &y, &cov, &rows, &weights, &[0, 1], &corr);
+        for a in 0..5 {
+            let row: Vec<Complex64> = (0..2).map(|j| w[(a, j)]).collect();
+            let expected = through_correction(&row, &prop.correction_full);
+            let got = prop.through_correction[a];
+            assert!(
+                (got - expected).norm() <= 1e-9 * expected.norm(),
+                "row {a}: {got} against {expected}"
+            );
+        }
+    }
 
     #[test]
     fn with_no_prediction_noise_the_bound_is_that_of_the_correction_error() {

@@ -196,7 +196,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     }
 
     // Coefficients' noise beside their signal: the trial too small to trust (issue 12).
-    super::warn_untrusted(fit, &kappas, solution);
+    super::warn_untrusted(fit, &prop, &kappas, solution);
 
     let min_max = options.objective == Some(Objective::MinMax);
     let bound = solution

@@ -26,12 +26,11 @@
 //! heavy the trial): there the warning says so and asks first for a sensor or
 //! speed that tells the planes apart.
 
-use nalgebra::{DMatrix, Matrix2};
-use num_complex::Complex64;
+use nalgebra::Matrix2;
 
 use super::Propagation;
 use crate::balancing::solution::{Solution, Warning};
-use crate::balancing::solve::{weighted_problem, Fit};
+use crate::balancing::solve::Fit;
 
 /// Largest `κ` (noise over signal energy of a plane's influence coefficients)
 /// at which the first-order 95 % figures are still calibrated (module doc).
@@ -81,16 +80,16 @@ pub fn kappa(fit: &Fit, prop: &Propagation) -> Vec<Option<f64>> {
 
 /// Add `trial_effect_small` for every plane whose `κ` exceeds
 /// [`KAPPA_LIMIT`], merging with an existing one.
-pub fn warn_untrusted(fit: &Fit, kappas: &[Option<f64>], solution: &mut Solution) {
-    // The weighted problem is formed again only when some plane is flagged.
-    let mut a = None;
+pub fn warn_untrusted(
+    fit: &Fit,
+    prop: &Propagation,
+    kappas: &[Option<f64>],
+    solution: &mut Solution,
+) {
     for (col, (&k, &j)) in kappas.iter().zip(&fit.planes).enumerate() {
         let Some(k) = k.filter(|&k| k > KAPPA_LIMIT) else {
             continue;
         };
-        let a = a.get_or_insert_with(|| {
-            weighted_problem(&fit.checked, &fit.w, &fit.selection, &fit.planes).0
-        });
         let id = fit.checked.session.planes[j].id.clone();
         let enlarge = (k / KAPPA_LIMIT).sqrt();
         // `1/√κ` is the effect-to-noise ratio of the part of the plane's effect
@@ -98,7 +97,7 @@ pub fn warn_untrusted(fit: &Fit, kappas: &[Option<f64>], solution: &mut Solution
         // part is a small share of the whole (the sensors see the plane much
         // like a combination of the others), the trial is not what is small:
         // telling the planes apart helps as much as a heavier trial.
-        let share = own_share(a, col);
+        let share = own_share(fit, prop, col, j);
         let (why, remedy) = if share < DEPENDENT_SHARE {
             (
                 format!(" (only {:.0} % of plane {id}'s effect is its own: the sensors see it much like the other planes together)", 100.0 * share),
@@ -123,21 +122,25 @@ pub fn warn_untrusted(fit: &Fit, kappas: &[Option<f64>], solution: &mut Solution
 /// plane's dependence on the others at least halves its effect-to-noise ratio.
 const DEPENDENT_SHARE: f64 = 0.5;
 
-/// The share of column `col` of `a` that the other columns do not span:
-/// `‖(I − P) a_col‖ / ‖a_col‖`, `P` the projection on the others (through QR).
-fn own_share(a: &DMatrix<Complex64>, col: usize) -> f64 {
-    let x = a.column(col).into_owned();
-    let norm = x.norm();
-    if norm == 0.0 {
+/// The share of plane `plane`'s weighted influence column `a_j` (column `col`
+/// of `A = G W`) that the other columns do not span, `‖(I − P) a_j‖ / ‖a_j‖`:
+/// the residual of `a_j` on the others has squared norm `1 / [(AᴴA)⁻¹]_jj`,
+/// which the propagation already holds (no second factorisation).
+fn own_share(fit: &Fit, prop: &Propagation, col: usize, plane: usize) -> f64 {
+    let Some(inv) = prop.gram_inv_diag.as_ref().and_then(|d| d.get(col)) else {
+        return 0.0;
+    };
+    let sel = &fit.selection;
+    let norm2: f64 = sel
+        .rows
+        .iter()
+        .zip(&sel.weights)
+        .map(|(&row, g)| (g * fit.w[(row, plane)].norm()).powi(2))
+        .sum();
+    if norm2 <= 0.0 || *inv <= 0.0 {
         return 0.0;
     }
-    let others = a.clone().remove_column(col);
-    if others.ncols() == 0 {
-        return 1.0;
-    }
-    let q = others.qr().q();
-    let own = &x - &q * (q.adjoint() * &x);
-    (own.norm() / norm).min(1.0)
+    (1.0 / (norm2 * inv)).sqrt().min(1.0)
 }
 
 /// Give plane `id` a `trial_effect_small` warning saying `text`, appended to

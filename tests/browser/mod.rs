@@ -238,11 +238,19 @@ impl Browser {
     }
 
     pub async fn click(&self, css: &str) {
-        self.wait_for(css)
-            .await
-            .click()
-            .await
-            .unwrap_or_else(|e| panic!("click {css}: {e}"));
+        // The page may render again between finding the element and clicking
+        // it (a reload of the session, an answer arriving): the element found
+        // is then stale, and the click goes to the one now matching `css`.
+        for _ in 0..50 {
+            match self.wait_for(css).await.click().await {
+                Ok(()) => return,
+                Err(e) if e.to_string().contains("stale element") => {
+                    tokio::time::sleep(Duration::from_millis(50)).await
+                }
+                Err(e) => panic!("click {css}: {e}"),
+            }
+        }
+        panic!("click {css}: the element went stale 50 times in a row");
     }
 
     /// The visible text of the first element matching `css`.

@@ -12,9 +12,24 @@ export function runsWithWeights() {
   return state.runs.filter((r) => r.stored && r.weights.length > 0);
 }
 
+/**
+ * Check runs, whatever they are named: stored runs with weights recorded once
+ * every plane has had its trial (every such run, in a trim from stored
+ * coefficients), and any run named "check…".
+ */
+export function checkRuns() {
+  const planes = state.setup.planes.map((p) => p.id);
+  const tried = new Set();
+  return runsWithWeights().filter((r) => {
+    const after = state.options.coefficientsFrom || planes.every((p) => tried.has(p));
+    r.weights.forEach((w) => tried.add(w.plane));
+    return after || /^check/i.test(r.id);
+  });
+}
+
 /** The run a trim starts from by default: the last check run, if one is stored after the trials. */
 export function defaultFromRun() {
-  const checks = runsWithWeights().filter((r) => /^check/i.test(r.id));
+  const checks = checkRuns();
   return checks.length ? checks[checks.length - 1].id : null;
 }
 

@@ -9,6 +9,7 @@ import { api } from "./api.js";
 import { state, rows, readingFor, referenceRun, sessionJson } from "./state.js";
 import { polarPlot } from "./polar.js";
 import { bodePlot, nyquistPlot, SERIES, CHECK_COLOURS } from "./bode.js";
+import { checkRuns } from "./options.js";
 
 const near = (a, b) => Math.abs(a - b) <= 0.01 * Math.max(a, b);
 
@@ -19,7 +20,7 @@ function bodeSeries(sol, sensor) {
   const pick = (run) => speeds.map((speed) => readingFor(run, { speed, sensor })).filter(Boolean).map((r) => ({ speed: r.speed_rpm, amplitude: r.amplitude, phase: r.phase_deg }));
   const out = [{ ...SERIES[0], points: reference ? pick(reference) : [] }];
   out.push({ ...SERIES[1], points: sol.predicted_residual.filter((r) => r.sensor === sensor).map((r) => ({ speed: r.speed_rpm, amplitude: r.amplitude, phase: r.phase_deg })) });
-  const checks = state.runs.filter((r) => r.stored && /^check/i.test(r.id));
+  const checks = checkRuns();
   checks.forEach((run, i) => out.push({ text: `check run “${run.id}”`, colour: CHECK_COLOURS[i % CHECK_COLOURS.length], points: pick(run) }));
   return out;
 }

@@ -79,7 +79,9 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
         .map(|c| json!({ "plane": c["plane"], "mass_g": 0.8 * c["mass_g"].as_f64().unwrap(), "angle_deg": c["angle_deg"] }))
         .collect();
     let mut check = predicted(url, session, &json!(weights)).await;
-    check["id"] = json!("check 1");
+    // Named as a technician might: a check run is known by when it was
+    // recorded (after every plane's trial), not by its name.
+    check["id"] = json!("after balancing");
     let stored = reqwest::Client::new()
         .post(format!("{url}/api/v1/sessions/{id}/runs"))
         .json(&check)
@@ -117,7 +119,7 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
             json!([
                 "as found",
                 "predicted after correction",
-                "check run “check 1”"
+                "check run “after balancing”"
             ]),
             "{got}"
         );

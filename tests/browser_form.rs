@@ -7,7 +7,7 @@ mod browser;
 mod common;
 
 use browser::form::{self, field, type_run, type_setup, value_of};
-use browser::stand::{example_session, Stand};
+use browser::stand::{example_session, post, Stand};
 use browser::Browser;
 use fantoccini::Locator;
 use serde_json::{json, Value};
@@ -50,15 +50,7 @@ async fn solve_and_compare_here(b: &Browser, expected: &Value) {
 
 /// The page's "mass ± g, angle ± °" and 95 % bounds, against the service's own solve of the session.
 async fn uncertainty_as_the_service_gives_it(b: &Browser, stand: &Stand, session: &Value) {
-    let solution: Value = reqwest::Client::new()
-        .post(stand.server.url("/api/v1/solve"))
-        .json(&json!({ "session": session }))
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let solution = post(stand, "/api/v1/solve", json!({ "session": session })).await;
     let c = &solution["corrections"][0];
     let u = &c["uncertainty"];
     let (m, a) = (

@@ -4,7 +4,7 @@
 
 use serde_json::Value;
 
-use super::stand::Stand;
+pub use super::stand::{get, post};
 use super::steps::js;
 use super::Browser;
 
@@ -92,25 +92,4 @@ pub fn assert_same_angles(got: &[f64], want: &[f64], what: &str) {
         let d = (g - w).rem_euclid(360.0);
         assert!(d.min(360.0 - d) < 0.5, "{what}: {got:?} drawn for {want:?}");
     }
-}
-
-pub async fn post(stand: &Stand, path: &str, body: Value) -> Value {
-    reqwest::Client::new()
-        .post(stand.server.url(path))
-        .json(&body)
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap()
-}
-
-pub async fn get(stand: &Stand, path: &str) -> Value {
-    reqwest::get(stand.server.url(path))
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap()
 }

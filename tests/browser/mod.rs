@@ -253,6 +253,13 @@ impl Browser {
         panic!("click {css}: the element went stale 50 times in a row");
     }
 
+    /// Load `url` as a fresh page: a new address that differs only in its
+    /// hash would keep the page as it is.
+    pub async fn open_fresh(&self, url: &str) {
+        self.client.goto("about:blank").await.unwrap();
+        self.client.goto(url).await.unwrap();
+    }
+
     /// The visible text of the first element matching `css`.
     pub async fn text(&self, css: &str) -> String {
         self.wait_for(css).await.text().await.expect("element text")

@@ -6,7 +6,7 @@ use serde_json::{json, Value};
 
 use super::form::choose;
 use super::job::{predicted, shots};
-use super::stand::Stand;
+use super::stand::{post, Stand};
 use super::steps::js;
 use super::Browser;
 
@@ -62,15 +62,7 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
     let b = &stand.browser;
     let url = stand.server.url("");
     let url = url.trim_end_matches('/');
-    let solution: Value = reqwest::Client::new()
-        .post(format!("{url}/api/v1/solve"))
-        .json(&json!({ "session": session }))
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let solution = post(stand, "/api/v1/solve", json!({ "session": session })).await;
     let weights: Vec<Value> = solution["corrections"]
         .as_array()
         .unwrap()
@@ -93,11 +85,8 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
         "{}",
         stored.text().await.unwrap()
     );
-    b.client.goto("about:blank").await.unwrap();
-    b.client
-        .goto(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await
-        .unwrap();
+    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
+        .await;
     b.wait_until(
         "the job with its check run is open",
         "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",

@@ -113,12 +113,8 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
         .await
         .unwrap();
     let id = created["id"].as_str().unwrap();
-    // A fresh page load (a new address differing only in its hash would keep the page).
-    b.client.goto("about:blank").await.unwrap();
-    b.client
-        .goto(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await
-        .unwrap();
+    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
+        .await;
     b.wait_until(
         "the multi-speed job is open",
         "return document.querySelector('#job-title').textContent.includes('stored') && !document.querySelector('#step-solve').hidden",
@@ -157,8 +153,7 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
 /// host, and the service's Content-Security-Policy forbids the browser to try.
 pub async fn the_form_weighs_little_and_asks_nothing_of_other_hosts(stand: &Stand) {
     let b = &stand.browser;
-    b.client.goto("about:blank").await.unwrap();
-    b.client.goto(&stand.server.url("/")).await.unwrap();
+    b.open_fresh(&stand.server.url("/")).await;
     b.wait_for("nav [data-step=\"setup\"]").await;
     let got = js(
         b,

@@ -36,6 +36,29 @@ impl Stand {
     }
 }
 
+/// The service's JSON answer to `body` posted at `path`.
+pub async fn post(stand: &Stand, path: &str, body: Value) -> Value {
+    reqwest::Client::new()
+        .post(stand.server.url(path))
+        .json(&body)
+        .send()
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap()
+}
+
+/// The service's JSON answer at `path`.
+pub async fn get(stand: &Stand, path: &str) -> Value {
+    reqwest::get(stand.server.url(path))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap()
+}
+
 /// The session and the expected answer of a public example.
 pub fn example_session(name: &str) -> (Value, Value) {
     let example = crate::common::example(name);

@@ -6,7 +6,7 @@ use serde_json::{json, Value};
 
 use super::form::{self, field, type_into};
 use super::job::{message_for, sideways, small_targets};
-use super::stand::Stand;
+use super::stand::{get, post, Stand};
 use super::Browser;
 
 pub const PROBE: &str = "probe";
@@ -79,18 +79,14 @@ pub async fn solve(b: &Browser) {
 
 /// The service's own trim from `from_run` of the stored session.
 pub async fn service_trim(stand: &Stand, id: &str, from_run: &str) -> Value {
-    let url = stand.server.url(&format!("/api/v1/sessions/{id}"));
-    let session: Value = reqwest::get(&url).await.unwrap().json().await.unwrap();
+    let session = get(stand, &format!("/api/v1/sessions/{id}")).await;
     let session = session.get("session").cloned().unwrap_or(session);
-    reqwest::Client::new()
-        .post(stand.server.url("/api/v1/solve"))
-        .json(&json!({ "session": session, "options": { "from_run": from_run } }))
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap()
+    post(
+        stand,
+        "/api/v1/solve",
+        json!({ "session": session, "options": { "from_run": from_run } }),
+    )
+    .await
 }
 
 pub async fn stored_id(b: &Browser) -> String {

@@ -98,7 +98,13 @@ pub fn warn_untrusted(
         // like a combination of the others), the trial is not what is small:
         // telling the planes apart helps as much as a heavier trial.
         let share = own_share(fit, prop, col, j);
-        let (why, remedy) = if share < DEPENDENT_SHARE {
+        let dependent = share < DEPENDENT_SHARE;
+        let given = if dependent {
+            ", given how alike the planes look to the sensors"
+        } else {
+            ""
+        };
+        let (why, remedy) = if dependent {
             (
                 format!(" (only {:.0} % of plane {id}'s effect is its own: the sensors see it much like the other planes together)", 100.0 * share),
                 format!("add a sensor or speed that tells plane {id} from the others, solve without it, or repeat the trial run with about {enlarge:.1} times the trial mass"),
@@ -110,7 +116,7 @@ pub fn warn_untrusted(
             )
         };
         let text = format!(
-            "the trial weight in plane {id} is too small for the readings' noise: over all sensors and speeds, the part of its effect that the other planes do not also produce is only {:.1} times its noise{why} (from amplitude_noise_pct, phase_noise_deg or the samples' scatter), and below {:.1} times the correction for {id} scatters too widely to be worth fitting (its interval is widened for this, but wide): {remedy}",
+            "the trial weight in plane {id} is too small for the readings' noise{given}: over all sensors and speeds, the part of its effect that the other planes do not also produce is only {:.1} times its noise{why} (from amplitude_noise_pct, phase_noise_deg or the samples' scatter), and below {:.1} times the correction for {id} scatters too widely to be worth fitting (its interval is widened for this, but wide): {remedy}",
             1.0 / k.sqrt(),
             1.0 / KAPPA_LIMIT.sqrt(),
         );

@@ -154,15 +154,28 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         }
         corr.uncertainty = Some(u);
     }
-    // The remaining vibration's bound (issue 12, `remaining`).
+    // The remaining vibration's bound (issue 12, `remaining`), its shrinkage
+    // from the rows of the fit.
+    let shrink = super::residual_shrinkage(
+        sel.rows
+            .iter()
+            .map(|&a| (fit.residual[a], &prop.prediction[a])),
+        sel.rows.len().saturating_sub(fit.planes.len()),
+    );
     for (a, (res, &r)) in solution
         .predicted_residual
         .iter_mut()
         .zip(fit.residual.iter())
         .enumerate()
     {
-        let through = &prop.through_correction[a];
-        res.amplitude_95 = Some(remaining_amplitude_95(r, &prop.prediction[a], through));
+        let (through, cross) = (&prop.through_correction[a], &prop.remaining_cross[a]);
+        res.amplitude_95 = Some(remaining_amplitude_95(
+            r,
+            &prop.prediction[a],
+            through,
+            cross,
+            shrink,
+        ));
     }
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {

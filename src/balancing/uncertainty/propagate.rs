@@ -45,6 +45,12 @@ pub struct Propagation {
     /// (what `remaining` needs; issue 15 read it from here rather than
     /// recomputing a `2q × 2q` form per row).
     pub through_correction: Vec<Matrix2<f64>>,
+    /// Per row (all rows): the real cross-covariance `E[u vᵀ]` of `u = W_a dC`
+    /// (`through_correction`) and the prediction's error `v = dR̂_a`, entry
+    /// `(i, j)` = `E[u_i v_j]` over (Re, Im). Not zero: `v = u + e_a` with the
+    /// row's own reading errors `e_a`, which also move `dC` (issue 12, item 2:
+    /// `remaining` conditions on it).
+    pub remaining_cross: Vec<Matrix2<f64>>,
     /// Rows × planes (all planes): standard deviation `√tr Cov` (the RMS of the
     /// complex error) of each plane's trial effect `E_aj = W_aj·τ_j`, where
     /// `τ_j = max_k |T_jk|` is the plane's largest trial mass. With one trial per
@@ -328,6 +334,7 @@ pub fn propagate_factored(
     let wj = cmul(&w_used, &j_mat);
     let wxi = cmul(&w_used, &xi); // n × runs: w_a · ξ_k
     let mut through_correction = Vec::with_capacity(n);
+    let mut remaining_cross = Vec::with_capacity(n);
     let (residual, prediction) = (0..n)
         .map(|a| {
             let (mut kd, mut jd) = (0.0, zero);
@@ -348,7 +355,18 @@ pub fn propagate_factored(
             }
             let kt: Complex64 = (0..q).map(|j| wk[(a, j)] * w_used[(a, j)].conj()).sum();
             let jt: Complex64 = (0..q).map(|j| wj[(a, j)] * w_used[(a, j)]).sum();
-            through_correction.push(real_cov(kt.re, jt));
+            let through = real_cov(kt.re, jt);
+            // E[u ēₐ] = kx and E[u eₐ] = jx as a real cross-covariance
+            // (E[u₁e₁] = Re(kx+jx)/2, E[u₁e₂] = Im(jx−kx)/2, E[u₂e₁] =
+            // Im(jx+kx)/2, E[u₂e₂] = Re(kx−jx)/2); Cov(u, v) = Σ_u + Cov(u, eₐ).
+            let cross_e = Matrix2::new(
+                (kx.re + jx.re) / 2.0,
+                (jx.im - kx.im) / 2.0,
+                (jx.im + kx.im) / 2.0,
+                (kx.re - jx.re) / 2.0,
+            );
+            remaining_cross.push(through + cross_e);
+            through_correction.push(through);
             let direct = real_cov(kd, jd);
             let whole = real_cov(kt.re + kd + 2.0 * kx.re, jt + jd + 2.0 * jx);
             (direct, whole)
@@ -374,6 +392,7 @@ pub fn propagate_factored(
         residual,
         prediction,
         through_correction,
+        remaining_cross,
         effect_sd,
         gram_inv_diag,
     }

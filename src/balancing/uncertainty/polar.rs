@@ -62,7 +62,7 @@ fn directions() -> &'static [(f64, f64); HALF] {
 }
 
 /// What a direction contributes that does not depend on ρ.
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Copy)]
 struct Ray {
     /// `A`, `1/A` and `√A`.
     a: f64,
@@ -78,7 +78,7 @@ struct Ray {
     c0: f64,
 }
 
-/// The rule for one row: the rays computed so far, finest level first needed.
+/// The rule for one row: the rays computed so far, coarse levels first.
 pub(super) struct Polar {
     mu: [f64; 2],
     inv_var: [f64; 2],
@@ -86,8 +86,9 @@ pub(super) struct Polar {
     c: f64,
     central: bool,
     start: usize,
-    built: usize,
-    rays: [Ray; HALF],
+    /// Filled lazily up to the finest level used (a zeroed array of all
+    /// [`HALF`] cost more than the whole rule for a typical row).
+    rays: Vec<Ray>,
 }
 
 impl Polar {
@@ -113,21 +114,19 @@ impl Polar {
             c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
             central: mu1 == 0.0 && mu2 == 0.0,
             start,
-            built: 0,
-            rays: [Ray::default(); HALF],
+            rays: Vec::with_capacity(4 << (start + 1)),
         })
     }
 
     /// Rays up to `n` directions in `[0, π)`.
     fn build(&mut self, n: usize) {
         let table = directions();
-        for i in self.built..n {
-            let (c, s) = table[i];
+        for &(c, s) in &table[self.rays.len()..n.max(self.rays.len())] {
             let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
             let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
             let r0 = b / a;
             let sa = a.sqrt();
-            self.rays[i] = if self.central {
+            let ray = if self.central {
                 Ray {
                     a,
                     inv_a: 1.0 / a,
@@ -149,8 +148,8 @@ impl Polar {
                     c0: normal_cdf(-sa * r0),
                 }
             };
+            self.rays.push(ray);
         }
-        self.built = self.built.max(n);
     }
 
     /// `[P(ρ), P'(ρ)]`, or `None` where the rule did not converge.

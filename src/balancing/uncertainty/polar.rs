@@ -6,9 +6,9 @@
 //! independent) the density along the ray `r·(cos θ, sin θ)` is
 //! `exp(−½(A r² − 2B r + C)) / (2π σ₁σ₂)` with `A = cos²θ/σ₁² + sin²θ/σ₂²`,
 //! `B = μ₁cos θ/σ₁² + μ₂ sin θ/σ₂²`, `C = μ₁²/σ₁² + μ₂²/σ₂²`. Completing the
-//! square (`r₀ = B/A`, `E = C − B r₀ ≥ 0`),
-//! `∫₀^ρ r e^{−½A(r−r₀)²} dr = (e^{−½A r₀²} − e^{−½A(ρ−r₀)²})/A
-//!   + r₀ √(2π/A) [Φ(√A(ρ−r₀)) − Φ(−√A r₀)]`,
+//! square (`r₀ = B/A`, `E = C − B r₀ ≥ 0`), the integral along a ray is
+//! `∫₀^ρ r e^{−½A(r−r₀)²} dr = (e^{−½A r₀²} − e^{−½A(ρ−r₀)²})/A +
+//! r₀ √(2π/A) [Φ(√A(ρ−r₀)) − Φ(−√A r₀)]`,
 //! so `P(ρ) = ∫₀^{2π} e^{−E/2} (that)/(2π σ₁σ₂) dθ` and
 //! `P'(ρ) = ∫₀^{2π} ρ e^{−E/2} e^{−½A(ρ−r₀)²}/(2π σ₁σ₂) dθ`. Both integrands
 //! are smooth and periodic in θ, where the trapezoidal rule converges

@@ -10,9 +10,24 @@ use browser::stand::{example_session, Stand};
 use fantoccini::Locator;
 use serde_json::{json, Value};
 
+/// One browser for every scene of this binary (CI time); each scene gets a
+/// new server and database and a freshly loaded form (`Stand::renew`).
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field() {
-    let stand = Stand::start().await;
+async fn the_form_marks_each_mistake_at_its_field_and_loses_nothing() {
+    let mut stand = Stand::start().await;
+    a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field(&stand).await;
+    stand.renew().await;
+    a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_field_marked(&stand).await;
+    stand.renew().await;
+    a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version(&stand).await;
+    stand.renew().await;
+    typed_numbers_are_accepted_or_refused_as_the_table_says(&stand).await;
+    stand.renew().await;
+    changing_the_sensors_keeps_each_typed_cell_with_its_sensor(&stand).await;
+    stand.stop().await;
+}
+
+async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field(stand: &Stand) {
     let b = &stand.browser;
     let (session, _) = example_session("pump-two-plane-exact.json");
     type_setup(b, &session).await;
@@ -106,12 +121,11 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field()
         message.contains("already has"),
         "the name clash at the run name: {message}"
     );
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_field_marked() {
-    let stand = Stand::start().await;
+async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_field_marked(
+    stand: &Stand,
+) {
     let b = &stand.browser;
     let (session, _) = example_session("pump-two-plane-exact.json");
     type_setup(b, &session).await;
@@ -149,12 +163,9 @@ async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_fi
         .await
         .unwrap();
     assert_eq!(focused.as_deref(), Some("planes[1].radius_mm"));
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version() {
-    let stand = Stand::start().await;
+async fn a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version(stand: &Stand) {
     let b = &stand.browser;
     let (session, expected) = example_session("pump-two-plane-exact.json");
     let right = form::typed(&session["runs"][1]["readings"][0]["amplitude"]);
@@ -214,12 +225,9 @@ async fn a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version() {
             "{plane}: {mass} g, {want_mass} g expected"
         );
     }
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn typed_numbers_are_accepted_or_refused_as_the_table_says() {
-    let stand = Stand::start().await;
+async fn typed_numbers_are_accepted_or_refused_as_the_table_says(stand: &Stand) {
     let b = &stand.browser;
     // (typed text, kind of field, the number it gives or the message shown)
     let table: &[(&str, &str, Result<f64, &str>)] = &[
@@ -275,12 +283,9 @@ async fn typed_numbers_are_accepted_or_refused_as_the_table_says() {
             ),
         }
     }
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn changing_the_sensors_keeps_each_typed_cell_with_its_sensor() {
-    let stand = Stand::start().await;
+async fn changing_the_sensors_keeps_each_typed_cell_with_its_sensor(stand: &Stand) {
     let b = &stand.browser;
     let (session, _) = example_session("pump-two-plane-exact.json");
     type_setup(b, &session).await;
@@ -310,5 +315,4 @@ async fn changing_the_sensors_keeps_each_typed_cell_with_its_sensor() {
         form::value_of(b, &field("runs[0].readings[3].amplitude")).await,
         ""
     );
-    stand.stop().await;
 }

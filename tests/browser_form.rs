@@ -86,9 +86,22 @@ async fn uncertainty_as_the_service_gives_it(b: &Browser, stand: &Stand, session
     );
 }
 
+/// One browser for every scene of this binary (CI time); each scene gets a
+/// new server and database and a freshly loaded form (`Stand::renew`).
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
-    let stand = Stand::start().await;
+async fn a_job_typed_into_the_form_is_solved_stored_reopened_and_shown_safely() {
+    let mut stand = Stand::start().await;
+    typing_the_two_plane_pump_example_key_by_key_gives_its_corrections(&stand).await;
+    stand.renew().await;
+    a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick(&stand).await;
+    stand.renew().await;
+    a_stored_session_reopens_after_a_reload(&stand).await;
+    stand.renew().await;
+    a_session_named_like_html_is_shown_as_text_and_runs_nothing(&stand).await;
+    stand.stop().await;
+}
+
+async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections(stand: &Stand) {
     let b = &stand.browser;
     let (session, expected) = example_session("pump-two-plane-exact.json");
     type_setup(b, &session).await;
@@ -122,7 +135,7 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
     b.screenshot("runs-768").await;
     b.viewport(1280, 800).await;
     solve_and_compare(b, &expected).await;
-    uncertainty_as_the_service_gives_it(b, &stand, &session).await;
+    uncertainty_as_the_service_gives_it(b, stand, &session).await;
     b.screenshot("solution-1280").await;
     b.client
         .execute("document.querySelector('.plots').scrollIntoView()", vec![])
@@ -207,12 +220,9 @@ async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections() {
     b.click("details.options summary").await;
     form::choose(b, "#step-solve select.from-run", "").await;
     solve_and_compare_here(b, &expected).await;
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick() {
-    let stand = Stand::start().await;
+async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick(stand: &Stand) {
     let b = &stand.browser;
     let (session, expected) = example_session("pump-two-plane-kept-trial-exact.json");
     type_setup(b, &session).await;
@@ -235,12 +245,9 @@ async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick()
         .unwrap();
     assert_eq!(got["runs"][2]["weights"], session["runs"][2]["weights"]);
     solve_and_compare(b, &expected).await;
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_stored_session_reopens_after_a_reload() {
-    let stand = Stand::start().await;
+async fn a_stored_session_reopens_after_a_reload(stand: &Stand) {
     let b = &stand.browser;
     let (session, expected) = example_session("pump-two-plane-exact.json");
     type_setup(b, &session).await;
@@ -284,12 +291,9 @@ async fn a_stored_session_reopens_after_a_reload() {
     // The job goes on where it stopped.
     type_run(b, &session, 2, false).await;
     solve_and_compare(b, &expected).await;
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_session_named_like_html_is_shown_as_text_and_runs_nothing() {
-    let stand = Stand::start().await;
+async fn a_session_named_like_html_is_shown_as_text_and_runs_nothing(stand: &Stand) {
     let b = &stand.browser;
     let name = "<img src=x onerror=alert(1)>";
     let (mut session, _) = example_session("pump-single-plane-noisy.json");
@@ -315,5 +319,4 @@ async fn a_session_named_like_html_is_shown_as_text_and_runs_nothing() {
         .unwrap();
     assert_eq!(parsed, json!(0));
     assert!(b.client.get_alert_text().await.is_err(), "an alert is open");
-    stand.stop().await;
 }

@@ -32,9 +32,27 @@ async fn import(b: &Browser, dir: &tempfile::TempDir, name: &str, content: &Valu
     b.wait_until("the imported session is open", &script).await;
 }
 
+/// One browser for every scene of this binary (CI time); each scene gets a
+/// new server and database and a freshly loaded form (`Stand::renew`).
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_corrections() {
-    let stand = Stand::start().await;
+async fn imported_jobs_show_their_rows_warnings_uncertainty_places_and_angles() {
+    let mut stand = Stand::start().await;
+    an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_corrections(&stand)
+        .await;
+    stand.renew().await;
+    a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(&stand).await;
+    stand.renew().await;
+    a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and_a_wide_one_greys_the_summary(&stand).await;
+    stand.renew().await;
+    a_plane_with_fixed_places_shows_its_correction_split_over_two_places(&stand).await;
+    stand.renew().await;
+    polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for_lead(&stand).await;
+    stand.stop().await;
+}
+
+async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_corrections(
+    stand: &Stand,
+) {
     let b = &stand.browser;
     let example = common::example("compressor-multispeed-noisy.json");
     import(b, &stand.dir, "compressor.json", &example).await;
@@ -81,7 +99,6 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         .await
         .unwrap();
     browser::job::shots(b, "solution-multispeed-plots").await;
-    stand.stop().await;
 }
 
 /// Words that read as code: with an underscore, a dot between letters, or brackets.
@@ -100,9 +117,7 @@ fn code_words(text: &str) -> Vec<String> {
         .collect()
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed() {
-    let stand = Stand::start().await;
+async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(stand: &Stand) {
     let b = &stand.browser;
     let mut session = common::example("pump-single-plane-noisy.json")["session"].clone();
     session["name"] = json!("weak trial");
@@ -195,13 +210,11 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
     assert!(answer.contains("Repeat the trial run"), "{answer}");
     b.wait_for("#step-report .report-answer .summary.unsure")
         .await;
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and_a_wide_one_greys_the_summary(
+    stand: &Stand,
 ) {
-    let stand = Stand::start().await;
     let b = &stand.browser;
     // The contract's example correction, rendered by the page's own module.
     let script = r#"
@@ -242,12 +255,9 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and
             ["summary unsure", ["400", "400", "400"]]
         ])
     );
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_plane_with_fixed_places_shows_its_correction_split_over_two_places() {
-    let stand = Stand::start().await;
+async fn a_plane_with_fixed_places_shows_its_correction_split_over_two_places(stand: &Stand) {
     let b = &stand.browser;
     let mut example = common::example("pump-two-plane-exact.json");
     example["session"]["planes"][0]["positions"] = json!(12);
@@ -268,7 +278,6 @@ async fn a_plane_with_fixed_places_shows_its_correction_split_over_two_places() 
         outboard, "–",
         "a plane without fixed places takes the weight at any angle"
     );
-    stand.stop().await;
 }
 
 /// Method 5.1: a correction `m` at `theta` between places at `a1` and `a2`.
@@ -295,9 +304,9 @@ async fn ninety_is_clockwise(b: &Browser) -> bool {
     v == json!(true)
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for_lead() {
-    let stand = Stand::start().await;
+async fn polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for_lead(
+    stand: &Stand,
+) {
     let b = &stand.browser;
     for (phase, clockwise) in [("lag", true), ("lead", false)] {
         let mut example = common::example("pump-single-plane-noisy.json");
@@ -309,5 +318,4 @@ async fn polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for
         b.wait_for("#step-solve svg.polar").await;
         assert_eq!(ninety_is_clockwise(b).await, clockwise, "phase {phase}");
     }
-    stand.stop().await;
 }

@@ -14,8 +14,7 @@ pub struct Stand {
 
 impl Stand {
     pub async fn start() -> Stand {
-        let dir = tempfile::tempdir().expect("temporary directory");
-        let (_, server) = crate::common::start_server(&dir.path().join("form.db")).await;
+        let (dir, server) = serve().await;
         let browser = Browser::start().await;
         browser
             .client
@@ -30,10 +29,36 @@ impl Stand {
         }
     }
 
+    /// Ready the stand for the next scene of a test binary that shares one
+    /// browser (CI time): a new server on a new database, so the scene sees no
+    /// other scene's sessions, and the form loaded fresh from it. The new
+    /// port is a new origin, so the form's saved draft (`localStorage`) is
+    /// empty too; the window is back at 1280×800, on screen, not in print.
+    pub async fn renew(&mut self) {
+        let (dir, server) = serve().await;
+        std::mem::replace(&mut self.server, server).shutdown().await;
+        self.dir = dir;
+        let b = &self.browser;
+        b.emulate_print(false).await;
+        b.client
+            .set_window_size(1280, 800)
+            .await
+            .expect("window resizes");
+        b.open_fresh(&self.server.url("/")).await;
+        b.wait_for("[data-field=\"name\"]").await;
+    }
+
     pub async fn stop(self) {
         self.browser.close().await;
         self.server.shutdown().await;
     }
+}
+
+/// A server on a new SQLite file in a new temporary directory.
+async fn serve() -> (tempfile::TempDir, crate::common::Server) {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let (_, server) = crate::common::start_server(&dir.path().join("form.db")).await;
+    (dir, server)
 }
 
 /// The service's JSON answer to `body` posted at `path`.

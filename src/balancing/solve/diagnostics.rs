@@ -8,6 +8,9 @@ use crate::balancing::factor::Factored;
 
 /// Below this significance factor a plane counts as dependent (Darlow).
 pub const SIGNIFICANCE_THRESHOLD: f64 = 0.2;
+/// Relative difference of norms below which Gram–Schmidt's pivot is a tie
+/// (far above rounding, far below any difference a reading can make).
+const PIVOT_TIE: f64 = 1e-9;
 /// Field practice: a trial should change some reading by at least 30 % (method §4).
 pub const TRIAL_EFFECT_THRESHOLD: f64 = 0.3;
 
@@ -18,6 +21,11 @@ pub const TRIAL_EFFECT_THRESHOLD: f64 = 0.3;
 /// and that part's norm is its factor. The first plane picked gets 1; a plane
 /// whose column is nearly a combination of more significant ones gets nearly 0.
 /// Returned in column order.
+///
+/// Norms equal within [`PIVOT_TIE`] are a tie, won by the plane listed first.
+/// The first step is always such a tie (every column has norm 1), and without
+/// the tolerance rounding in the scaling picked the winner: the same readings
+/// with `W` computed another way moved every factor by up to 5 % (issue 15).
 pub fn significance_factors(a: &DMatrix<Complex64>) -> Vec<f64> {
     let n = a.ncols();
     let mut cols: Vec<DVector<Complex64>> = (0..n)
@@ -34,13 +42,16 @@ pub fn significance_factors(a: &DMatrix<Complex64>) -> Vec<f64> {
     let mut factor = vec![0.0; n];
     let mut left: Vec<usize> = (0..n).collect();
     while !left.is_empty() {
+        let norms: Vec<f64> = left.iter().map(|&k| cols[k].norm()).collect();
+        let top = norms.iter().cloned().fold(0.0, f64::max);
         let (pos, &j) = left
             .iter()
             .enumerate()
-            .max_by(|(_, &x), (_, &y)| cols[x].norm().total_cmp(&cols[y].norm()))
-            .expect("non-empty");
+            .filter(|&(i, _)| norms[i] >= top * (1.0 - PIVOT_TIE))
+            .min_by_key(|&(_, &k)| k)
+            .expect("the largest norm is among them");
         left.swap_remove(pos);
-        let norm = cols[j].norm();
+        let norm = norms[pos];
         factor[j] = norm;
         if norm <= 1e-14 {
             continue;
@@ -182,6 +193,45 @@ mod tests {
         let independent =
             DMatrix::from_row_slice(2, 2, &[c(1.0, 0.0), c(0.0, 0.0), c(0.0, 0.0), c(0.0, 1e-6)]);
         assert_eq!(undetermined_planes(&independent), vec![false, false]);
+    }
+
+    #[test]
+    fn the_factors_do_not_depend_on_how_each_column_was_scaled() {
+        // P2 is nearly P0 + P1. Scaling a column changes only the rounding of
+        // its unit-norm copy, which used to decide the first pivot (a tie).
+        let base = DMatrix::from_row_slice(
+            4,
+            3,
+            &[
+                c(1.0, 0.2),
+                c(0.1, 0.9),
+                c(1.1, 1.15),
+                c(0.3, -0.5),
+                c(0.8, 0.1),
+                c(1.1, -0.35),
+                c(-0.2, 0.4),
+                c(0.5, 0.5),
+                c(0.3, 0.92),
+                c(0.7, 0.0),
+                c(-0.1, 0.6),
+                c(0.6, 0.61),
+            ],
+        );
+        let reference = significance_factors(&base);
+        assert!(reference[2] < SIGNIFICANCE_THRESHOLD, "{reference:?}");
+        let mut seed = 0x9e37_79b9_u64;
+        for _ in 0..200 {
+            let mut a = base.clone();
+            for mut col in a.column_iter_mut() {
+                seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+                let s = 0.1 + (seed >> 11) as f64 / (1u64 << 53) as f64 * 10.0;
+                col *= Complex64::from(s);
+            }
+            let f = significance_factors(&a);
+            for (x, y) in f.iter().zip(&reference) {
+                assert!((x - y).abs() < 1e-9, "{f:?} against {reference:?}");
+            }
+        }
     }
 
     #[test]

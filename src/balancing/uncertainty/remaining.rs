@@ -24,7 +24,7 @@
 //!    the predictive of the Neyman confidence distribution of `|r|`, Shen,
 //!    Liu & Xie 2018, JSPI 195, exact in the limits `Σ_v → 0`, `Σ_u → 0` and
 //!    `|r| → ∞`: 97.9–99.9 % at `r = 0`. The Rice-debiased centre with
-//!    `Σ_u + ωΣ_v` that this replaced held 96–98 % at `r = 0` and 69–86 % at
+//!    `Σ_u + ωΣ_v` that this replaced held 96–98 % at `r = 0` and 69–92 % at
 //!    `|r|` of one to two noise sd.) What the rows of one job share is the
 //!    size of their residuals beside their noise, and that they do tell:
 //!    parametric empirical Bayes (Morris 1983, "Parametric empirical Bayes
@@ -40,7 +40,7 @@
 //!
 //! What it does not do: hold 95 % at each row whatever that row's residual.
 //! It holds 95 % of the rows of a job together (Monte Carlo of the Gaussian
-//! model with the weight known: 95 % within 1 %; with it estimated from 40
+//! model with the weight known: 95 % within 1.25 %; with it estimated from 40
 //! rows, 93–97 % except 88–90 % where `Σ_u` is under a tenth of the noise and
 //! uncorrelated, and 90–97 % when a fifth of the rows carry all the residual:
 //! remaining_tests.rs). The scatter of the estimated `S` (about `1/√dof`)

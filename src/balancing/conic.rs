@@ -1,6 +1,6 @@
 //! Min-max and mass-bounded corrections as second-order cone programs
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
-//! rows (`active_set`) by a small dense barrier method (`barrier`), checked
+//! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
 //! against Clarabel's full program (tests/minmax_equivalence.rs), with
 //! Clarabel again wherever that method's arithmetic fails.
 //!
@@ -16,8 +16,9 @@ use super::error::InputError;
 use super::model::Objective;
 
 mod active_set;
-mod barrier;
+mod primal_dual;
 mod program;
+mod soc;
 pub mod wiring;
 
 /// How min-max rows reach the cone solver.

@@ -15,7 +15,7 @@ use std::time::Instant;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
-use super::barrier;
+use super::primal_dual;
 use super::program::solve_on;
 use super::Limits;
 use crate::balancing::error::InputError;
@@ -87,8 +87,8 @@ pub(super) fn min_max(
     }
 }
 
-/// The min-max program on `rows`: the dense barrier method, or Clarabel's
-/// one-cone-per-row program where the barrier's arithmetic fails.
+/// The min-max program on `rows`: the dense primal-dual method, or
+/// Clarabel's one-cone-per-row program where its arithmetic fails.
 fn solve(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
@@ -96,7 +96,7 @@ fn solve(
     rows: &[usize],
     limits: Limits,
 ) -> Result<(Vec<Complex64>, u32, String), InputError> {
-    match barrier::min_max(a, b, bounds, rows, limits)? {
+    match primal_dual::min_max(a, b, bounds, rows, limits)? {
         Some((y, steps)) => Ok((y, steps, "Solved".into())),
         None => solve_on(a, b, Objective::MinMax, bounds, rows, limits),
     }

@@ -7,6 +7,7 @@ pub mod factor;
 pub mod influence;
 pub mod practical;
 pub mod report;
+pub mod shared_id;
 pub mod solution;
 mod weighted;
 

@@ -11,6 +11,7 @@ use crate::balancing::solution::{
     Correction, InfluenceCoefficient, IsoTolerance, PlaneDiagnostics, Residual, Solution, Summary,
     Warning,
 };
+use crate::balancing::solve::shared_id::SharedId;
 use crate::balancing::solve::Fit;
 
 fn warning(code: &str, plane: Option<&str>, message: String) -> Warning {
@@ -155,14 +156,25 @@ pub fn solution(fit: &Fit, options: &SolveOptions) -> Solution {
         .collect();
 
     let mut influence_coefficients = Vec::with_capacity(checked.rows.len() * session.planes.len());
+    // Each id once, shared by its coefficients (issue 15).
+    let sensor_ids: Vec<SharedId> = session
+        .sensors
+        .iter()
+        .map(|s| SharedId::from(s.id.as_str()))
+        .collect();
+    let plane_ids: Vec<SharedId> = session
+        .planes
+        .iter()
+        .map(|p| SharedId::from(p.id.as_str()))
+        .collect();
     for (a, row) in checked.rows.iter().enumerate() {
-        for (j, plane) in session.planes.iter().enumerate() {
+        for (j, plane) in plane_ids.iter().enumerate() {
             // 1 g at angle 0 is the internal weight 1 in either angle direction.
             let (amplitude_per_g, phase_deg) = reading_out(conv, fit.w[(a, j)]);
             influence_coefficients.push(InfluenceCoefficient {
                 speed_rpm: row.speed_rpm,
-                sensor: session.sensors[row.sensor].id.clone(),
-                plane: plane.id.clone(),
+                sensor: sensor_ids[row.sensor].clone(),
+                plane: plane.clone(),
                 amplitude_per_g,
                 phase_deg,
             });

@@ -7,6 +7,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::shared_id::SharedId;
 use crate::balancing::model::{Conventions, Objective, Unit};
 
 /// One part of a correction split over two neighbouring fixed places (method 5.1).
@@ -117,8 +118,11 @@ pub struct Residual {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct InfluenceCoefficient {
     pub speed_rpm: f64,
-    pub sensor: String,
-    pub plane: String,
+    /// Shared by the coefficients that name it (issue 15).
+    #[schema(value_type = String)]
+    pub sensor: SharedId,
+    #[schema(value_type = String)]
+    pub plane: SharedId,
     /// Sensor unit per gram.
     pub amplitude_per_g: f64,
     /// Phase of that vibration, in the session's `phase` convention.

@@ -333,7 +333,8 @@ pub fn propagate_factored(
             let (mut kd, mut jd) = (0.0, zero);
             let (mut kx, mut jx) = (zero, zero);
             // w_a · a_i, the row's own share (never a rows × rows product).
-            let wa = position[a].map(|i| w_used.row(a).transpose().dot(&a_vec.column(i)));
+            // (tr_dot: no transposed copy of the row per row, issue 15)
+            let wa = position[a].map(|i| w_used.row(a).tr_dot(&a_vec.column(i)));
             for k in 0..runs {
                 let (s, p) = mom[a][k];
                 let l = lambda[k];
@@ -360,13 +361,14 @@ pub fn propagate_factored(
     let taus: Vec<f64> = (0..planes)
         .map(|j| (0..t.ncols()).map(|k| t[(j, k)].norm()).fold(0.0, f64::max))
         .collect();
+    // |T⁺_kj|², |s_j|² and the readings' traces once, not per (row, plane)
+    // pair (issue 15); the sums keep their order.
+    let tp2 = DMatrix::from_fn(runs - 1, planes, |k, j| tp[(k, j)].norm_sqr());
+    let traces = DMatrix::from_fn(runs, n, |k, a| cov[a][k].trace());
     let effect_sd = DMatrix::from_fn(n, planes, |a, j| {
-        let tau = taus[j];
-        let var = (1..runs)
-            .map(|k| tp[(k - 1, j)].norm_sqr() * cov[a][k].trace())
-            .sum::<f64>()
-            + s[j].norm_sqr() * cov[a][0].trace();
-        tau * var.sqrt()
+        let (tr, t2) = (traces.column(a), tp2.column(j));
+        let var = (1..runs).map(|k| t2[k - 1] * tr[k]).sum::<f64>() + s[j].norm_sqr() * tr[0];
+        taus[j] * var.sqrt()
     });
     Propagation {
         correction,

@@ -35,6 +35,7 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 mod apply;
+mod arc;
 mod bias;
 mod dof;
 mod polar;

@@ -63,7 +63,7 @@ fn directions() -> &'static [(f64, f64); HALF] {
 
 /// What a direction contributes that does not depend on ρ.
 #[derive(Clone, Copy)]
-struct Ray {
+pub(super) struct Ray {
     /// `A`, `1/A` and `√A`.
     a: f64,
     inv_a: f64,
@@ -76,6 +76,39 @@ struct Ray {
     e0: f64,
     /// `Φ(−√A r₀)` (the opposite direction's is `1 −` this).
     c0: f64,
+}
+
+impl Ray {
+    /// The direction with `A`, `B` of the module doc, for `C` = `c` and
+    /// `1/(σ₁σ₂)` = `k`.
+    pub(super) fn off_centre(a: f64, b: f64, c: f64, k: f64) -> Ray {
+        let r0 = b / a;
+        let sa = a.sqrt();
+        let e = (c - b * r0).max(0.0);
+        Ray {
+            a,
+            inv_a: 1.0 / a,
+            sa,
+            r0,
+            k: (-0.5 * e).exp() * k,
+            e0: (-0.5 * a * r0 * r0).exp(),
+            c0: normal_cdf(-sa * r0),
+        }
+    }
+
+    /// [`Ray::along`] this direction (not its opposite).
+    pub(super) fn ahead(&self, rho: f64) -> [f64; 2] {
+        self.along(rho, self.r0, self.c0)
+    }
+
+    /// `k ·` the integral along the ray from 0 to ρ, and `k ·` its derivative in ρ.
+    pub(super) fn along(&self, rho: f64, r0: f64, c0: f64) -> [f64; 2] {
+        let t = self.sa * (rho - r0);
+        let e = (-0.5 * t * t).exp();
+        let along = (self.e0 - e) * self.inv_a
+            + r0 * std::f64::consts::TAU.sqrt() / self.sa * (normal_cdf(t) - c0);
+        [self.k * along, self.k * rho * e]
+    }
 }
 
 /// The rule for one row: the rays computed so far, coarse levels first.
@@ -124,29 +157,18 @@ impl Polar {
         for &(c, s) in &table[self.rays.len()..n.max(self.rays.len())] {
             let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
             let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
-            let r0 = b / a;
-            let sa = a.sqrt();
             let ray = if self.central {
                 Ray {
                     a,
                     inv_a: 1.0 / a,
-                    sa,
+                    sa: a.sqrt(),
                     r0: 0.0,
                     k: self.k,
                     e0: 1.0,
                     c0: 0.5,
                 }
             } else {
-                let e = (self.c - b * r0).max(0.0);
-                Ray {
-                    a,
-                    inv_a: 1.0 / a,
-                    sa,
-                    r0,
-                    k: (-0.5 * e).exp() * self.k,
-                    e0: (-0.5 * a * r0 * r0).exp(),
-                    c0: normal_cdf(-sa * r0),
-                }
+                Ray::off_centre(a, b, self.c, self.k)
             };
             self.rays.push(ray);
         }
@@ -154,7 +176,6 @@ impl Polar {
 
     /// `[P(ρ), P'(ρ)]`, or `None` where the rule did not converge.
     pub(super) fn inside(&mut self, rho: f64) -> Option<[f64; 2]> {
-        let root_tau = std::f64::consts::TAU.sqrt();
         let (mut sum, mut dsum) = (0.0, 0.0);
         let mut last: Option<[f64; 2]> = None;
         let mut done = 0;
@@ -168,12 +189,9 @@ impl Polar {
                     dsum += 2.0 * ray.k * rho * e;
                 } else {
                     for (r0, c0) in [(ray.r0, ray.c0), (-ray.r0, 1.0 - ray.c0)] {
-                        let t = ray.sa * (rho - r0);
-                        let e = (-0.5 * t * t).exp();
-                        let along = (ray.e0 - e) * ray.inv_a
-                            + r0 * root_tau / ray.sa * (normal_cdf(t) - c0);
-                        sum += ray.k * along;
-                        dsum += ray.k * rho * e;
+                        let [p, dp] = ray.along(rho, r0, c0);
+                        sum += p;
+                        dsum += dp;
                     }
                 }
             }

@@ -5,6 +5,7 @@
 use nalgebra::{Matrix2, SymmetricEigen, Vector2};
 use num_complex::Complex64;
 
+use super::arc::Arc;
 use super::polar::Polar;
 use super::quadrature;
 use crate::balancing::model::{AngleDirection, Conventions};
@@ -150,9 +151,11 @@ fn extreme(f: impl Fn(f64) -> f64) -> f64 {
 /// probability, a shift of the bound of about 2·10⁻³σ: ample for a 95 % bound),
 /// with `P` and `P'` from the trapezoidal rule over the direction from the
 /// origin, the integral along each ray in closed form (`polar`, issue 15),
-/// where it converges to 10⁻¹⁰ within 128 directions; otherwise (a mass very
-/// narrow in angle: `|μ|` or `σ₁` beyond about 20 `σ₂`) by one-dimensional
-/// adaptive quadrature in the principal axes (`quadrature`). Φ is within
+/// where it converges to 10⁻¹⁰ within 128 directions; for a mean far from
+/// the origin (`|μ| ≥ 12σ₁`, the rows of a min-max job) by the same rule over
+/// the arc of directions that holds the mass (`arc`); otherwise (a mass very
+/// narrow in angle and thin across the circle) by one-dimensional adaptive
+/// quadrature in the principal axes (`quadrature`). Φ is within
 /// 1.2·10⁻⁷ (see [`normal_cdf`]). The one approximation is the first-order
 /// (Gaussian) error model itself. Tests compare the bound with a Monte Carlo
 /// of the Gaussian and the fast path with the quadrature.
@@ -161,13 +164,22 @@ fn extreme(f: impl Fn(f64) -> f64) -> f64 {
 pub fn amplitude_95(mean: Complex64, cov: &Matrix2<f64>) -> f64 {
     quantile(mean, cov, |mu1, mu2, s1, s2| {
         let mut ring = Polar::new(mu1, mu2, s1, s2);
-        move |rho| match ring.as_mut().and_then(|r| r.inside(rho)) {
-            Some(p) => p,
-            None => {
-                // Not converged: the quadrature for the rest of this row.
-                ring = None;
-                quadrature::inside(mu1, mu2, s1, s2, rho)
+        // A mean far from the origin: the arc that holds the mass (`arc`).
+        let mut arc = if ring.is_none() {
+            Arc::new(mu1, mu2, s1, s2)
+        } else {
+            None
+        };
+        move |rho| {
+            if let Some(p) = ring.as_mut().and_then(|r| r.inside(rho)) {
+                return p;
             }
+            if let Some(p) = arc.as_mut().and_then(|r| r.inside(rho)) {
+                return p;
+            }
+            // Not converged: the quadrature for the rest of this row.
+            (ring, arc) = (None, None);
+            quadrature::inside(mu1, mu2, s1, s2, rho)
         }
     })
 }

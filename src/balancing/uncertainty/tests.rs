@@ -276,3 +276,47 @@ fn the_polar_rule_matches_a_direct_sum_over_the_disc() {
         assert!((p - d).abs() < 1e-6, "{axes:?} {rho}: {p} against {d}");
     }
 }
+
+#[test]
+fn the_arc_rule_agrees_with_the_quadrature_for_means_far_from_the_origin() {
+    use rand::Rng;
+    // Residual rows of a min-max job: the mean 12 to 10⁴ σ₁ from the origin,
+    // isotropic to thin, any direction (the full-turn rule gives up there).
+    // A mass thin across the circle |R| = ρ makes the ray integrals step
+    // sharply in angle: there the rule gives up and the quadrature answers.
+    let mut rng = StdRng::seed_from_u64(16);
+    let (mut worst_p, mut worst_bound, mut used) = (0.0f64, 0.0f64, 0);
+    for _ in 0..400 {
+        let s1 = rng.gen_range(-3.0f64..3.0).exp();
+        let s2 = s1 * 10f64.powf(rng.gen_range(-3.0..0.0));
+        let m = s1 * 10f64.powf(rng.gen_range(12f64.log10()..4.0));
+        let mean = Complex64::from_polar(m, rng.gen_range(0.0..std::f64::consts::TAU));
+        let cov = turned(s1, s2, rng.gen_range(0.0..std::f64::consts::PI));
+        let [mu1, mu2, s1, s2] = super::region::principal(&mean, &cov).expect("spread");
+        let mut arc = super::arc::Arc::new(mu1, mu2, s1, s2).expect("far from the origin");
+        let q = amplitude_95_by_quadrature(mean, &cov);
+        for rho in [q - 2.0 * s1, q, q + s1] {
+            if let Some([p, _]) = arc.inside(rho) {
+                let [r, _] = super::quadrature::inside(mu1, mu2, s1, s2, rho);
+                worst_p = worst_p.max((p - r).abs());
+                used += 1;
+            }
+        }
+        worst_bound = worst_bound.max((amplitude_95(mean, &cov) - q).abs() / q);
+    }
+    eprintln!(
+        "arc against quadrature: {used} of 1200 points, {worst_p:e} in probability, bound {worst_bound:e} relative"
+    );
+    assert!(
+        used > 400,
+        "the arc rule converged for {used} of 1200 points"
+    );
+    assert!(
+        worst_p < 1e-7,
+        "largest difference in probability {worst_p:e}"
+    );
+    assert!(
+        worst_bound <= 1e-5,
+        "largest relative difference {worst_bound:e}"
+    );
+}

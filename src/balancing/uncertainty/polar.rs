@@ -33,8 +33,8 @@ use super::region::normal_cdf;
 const TOL_P: f64 = 1e-10;
 /// Agreement of two successive sums of the density, relative.
 const TOL_D: f64 = 1e-8;
-/// Level `l` has `8·2^l` directions over the full turn; the finest has 128.
-const MAX_LEVEL: usize = 4;
+/// Level `l` has `8·2^l` directions over the full turn; the finest has 512.
+const MAX_LEVEL: usize = 6;
 /// Directions in `[0, π)` at the finest level.
 const HALF: usize = 4 << MAX_LEVEL;
 

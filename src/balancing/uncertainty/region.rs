@@ -151,8 +151,8 @@ fn extreme(f: impl Fn(f64) -> f64) -> f64 {
 /// probability, a shift of the bound of about 2·10⁻³σ: ample for a 95 % bound),
 /// with `P` and `P'` from the trapezoidal rule over the direction from the
 /// origin, the integral along each ray in closed form (`polar`, issue 15),
-/// where it converges to 10⁻¹⁰ within 128 directions; for a mean far from
-/// the origin (`|μ| ≥ 12σ₁`, the rows of a min-max job) by the same rule over
+/// where it converges to 10⁻¹⁰ within 512 directions; for a mean far from
+/// the origin (`|μ| ≥ 8σ₁`, the rows of a min-max job) by the same rule over
 /// the arc of directions that holds the mass (`arc`); otherwise (a mass very
 /// narrow in angle and thin across the circle) by one-dimensional adaptive
 /// quadrature in the principal axes (`quadrature`). Φ is within
@@ -163,18 +163,19 @@ fn extreme(f: impl Fn(f64) -> f64) -> f64 {
 /// `|μ| ≫ σ` it tends to `|μ| + 1.645 σ_radial`.
 pub fn amplitude_95(mean: Complex64, cov: &Matrix2<f64>) -> f64 {
     quantile(mean, cov, |mu1, mu2, s1, s2| {
-        let mut ring = Polar::new(mu1, mu2, s1, s2);
-        // A mean far from the origin: the arc that holds the mass (`arc`).
-        let mut arc = if ring.is_none() {
-            Arc::new(mu1, mu2, s1, s2)
+        // A mean far from the origin: the arc that holds the mass (`arc`);
+        // otherwise the full turn (`polar`).
+        let mut arc = Arc::new(mu1, mu2, s1, s2);
+        let mut ring = if arc.is_none() {
+            Polar::new(mu1, mu2, s1, s2)
         } else {
             None
         };
         move |rho| {
-            if let Some(p) = ring.as_mut().and_then(|r| r.inside(rho)) {
+            if let Some(p) = arc.as_mut().and_then(|r| r.inside(rho)) {
                 return p;
             }
-            if let Some(p) = arc.as_mut().and_then(|r| r.inside(rho)) {
+            if let Some(p) = ring.as_mut().and_then(|r| r.inside(rho)) {
                 return p;
             }
             // Not converged: the quadrature for the rest of this row.

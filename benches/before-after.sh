@@ -41,6 +41,7 @@ fi
 
 solve_ids=(
     "solve two planes, 4 sensors, 1 speed"
+    "solve two planes, 4 sensors, 1 speed, stated noise"
     "large/solve 16 planes, 32 sensors, 40 speeds"
     "large/validate 16 planes, 32 sensors, 40 speeds"
     "limits/solve 64 planes, 256 sensors, 3 speeds"

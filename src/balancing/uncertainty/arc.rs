@@ -13,7 +13,9 @@
 //! the mass, far below the 2·10⁻⁴ to which `amplitude_95` solves for 95 %. The integrand over the arc is smooth and vanishes
 //! to that level at both ends, where the trapezoidal rule converges
 //! geometrically (spacing `h` leaves about `e^{−2π²(σ_θ/h)²}`); the rule is
-//! doubled from 8 intervals until two successive sums agree as in `polar`.
+//! doubled from 8 intervals until two successive sums agree as in `polar`,
+//! comparing only levels fine enough to see a mass thin across (`σ₂/|μ|` in
+//! angle); one too thin for the finest level goes to the quadrature.
 
 use super::polar::Ray;
 
@@ -39,6 +41,8 @@ pub(super) struct Arc {
     c: f64,
     centre: f64,
     half: f64,
+    /// The first level whose sum is compared with the next one.
+    start: usize,
     rays: Vec<Ray>,
 }
 
@@ -52,13 +56,23 @@ impl Arc {
         }
         let (u1, u2) = (mu1 / m, mu2 / m);
         let across = (u2 * s1).hypot(u1 * s2);
+        let half = (REACH * across / (m - REACH * s1)).atan();
+        // A mass thin across (σ₂) makes the ray integrals change within about
+        // `σ₂/|μ|` in angle: sums are compared only from the level whose
+        // spacing is at most twice that (as in `polar`), so that no two
+        // coarse sums agree by both stepping over it; a mass too thin for the
+        // finest level is left to the quadrature.
+        let width = s2 / m;
+        let spacing = |l: usize| 2.0 * half / f64::from(8u32 << l);
+        let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
             mu: [mu1, mu2],
             inv_var: [1.0 / (s1 * s1), 1.0 / (s2 * s2)],
             k: 1.0 / (s1 * s2),
             c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
             centre: mu2.atan2(mu1),
-            half: (REACH * across / (m - REACH * s1)).atan(),
+            half,
+            start,
             rays: Vec::with_capacity(65),
         })
     }
@@ -70,18 +84,41 @@ impl Arc {
         }
         // Level l ≥ 1 holds nodes 8·2^(l−1) + 1 ..= 8·2^l: its k-th is the
         // odd multiple 2k + 1 of the level's spacing 2/(8·2^l) from −1.
-        let l = (usize::BITS - (i - 1).leading_zeros()) as usize - 3;
+        let l = Self::level(i);
         let k = i - 1 - (8 << (l - 1));
         -1.0 + (2 * k + 1) as f64 / f64::from(4u32 << l)
     }
 
     /// Rays at the first `n` nodes.
+    /// The nodes of a level are equally spaced: one `sin_cos` for its first
+    /// and one for its step, then rotations (a `sin_cos` per node was a
+    /// third of the two-plane solve's bound).
     fn build(&mut self, n: usize) {
-        for i in self.rays.len()..n {
-            let (s, c) = (self.centre + self.half * Self::node(i)).sin_cos();
-            let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
-            let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
-            self.rays.push(Ray::off_centre(a, b, self.c, self.k));
+        let mut i = self.rays.len();
+        while i < n {
+            let (end, dx) = match Self::level(i) {
+                0 => (9, 0.25),
+                l => ((8 << l) + 1, 2.0 / f64::from(4u32 << l)),
+            };
+            let end = end.min(n);
+            let (mut s, mut c) = (self.centre + self.half * Self::node(i)).sin_cos();
+            let (ds, dc) = (self.half * dx).sin_cos();
+            for _ in i..end {
+                let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
+                let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
+                self.rays.push(Ray::off_centre(a, b, self.c, self.k));
+                (c, s) = (c * dc - s * ds, s * dc + c * ds);
+            }
+            i = end;
+        }
+    }
+
+    /// The level node `i` belongs to.
+    fn level(i: usize) -> usize {
+        if i <= 8 {
+            0
+        } else {
+            (usize::BITS - (i - 1).leading_zeros()) as usize - 3
         }
     }
 
@@ -115,7 +152,9 @@ impl Arc {
                     return Some(now);
                 }
             }
-            last = Some(now);
+            if l >= self.start {
+                last = Some(now);
+            }
         }
         None
     }

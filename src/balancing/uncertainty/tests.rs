@@ -293,13 +293,15 @@ fn the_arc_rule_agrees_with_the_quadrature_for_means_far_from_the_origin() {
         let mean = Complex64::from_polar(m, rng.gen_range(0.0..std::f64::consts::TAU));
         let cov = turned(s1, s2, rng.gen_range(0.0..std::f64::consts::PI));
         let [mu1, mu2, s1, s2] = super::region::principal(&mean, &cov).expect("spread");
-        let mut arc = super::arc::Arc::new(mu1, mu2, s1, s2).expect("far from the origin");
         let q = amplitude_95_by_quadrature(mean, &cov);
-        for rho in [q - 2.0 * s1, q, q + s1] {
-            if let Some([p, _]) = arc.inside(rho) {
-                let [r, _] = super::quadrature::inside(mu1, mu2, s1, s2, rho);
-                worst_p = worst_p.max((p - r).abs());
-                used += 1;
+        // None: too thin across for the arc's finest level (the quadrature answers).
+        if let Some(mut arc) = super::arc::Arc::new(mu1, mu2, s1, s2) {
+            for rho in [q - 2.0 * s1, q, q + s1] {
+                if let Some([p, _]) = arc.inside(rho) {
+                    let [r, _] = super::quadrature::inside(mu1, mu2, s1, s2, rho);
+                    worst_p = worst_p.max((p - r).abs());
+                    used += 1;
+                }
             }
         }
         worst_bound = worst_bound.max((amplitude_95(mean, &cov) - q).abs() / q);

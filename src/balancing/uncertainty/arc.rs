@@ -13,21 +13,17 @@
 //! the mass, far below the 2·10⁻⁴ to which `amplitude_95` solves for 95 %. The integrand over the arc is smooth and vanishes
 //! to that level at both ends, where the trapezoidal rule converges
 //! geometrically (spacing `h` leaves about `e^{−2π²(σ_θ/h)²}`); the rule is
-//! doubled from 8 intervals until two successive sums agree as in `polar`,
+//! doubled from 8 intervals until two successive sums agree (`polar::agree`),
 //! comparing only levels fine enough to see a mass thin across (`σ₂/|μ|` in
 //! angle); one too thin for the finest level goes to the quadrature.
 
-use super::polar::Ray;
+use super::polar::{agree, Ray};
 
 /// The mean is far from the origin when `|μ| ≥ FAR σ₁`.
 const FAR: f64 = 8.0;
 /// Standard deviations (Mahalanobis) of the mass that the arc holds: what
 /// lies beyond has probability `e^{−REACH²/2}` = 7·10⁻¹⁰.
 const REACH: f64 = 6.5;
-/// Agreement in probability of two successive sums.
-const TOL_P: f64 = 1e-10;
-/// Agreement of two successive sums of the density, relative.
-const TOL_D: f64 = 1e-8;
 /// Level `l` has `8·2^l` intervals over the arc.
 const MAX_LEVEL: usize = 7;
 
@@ -145,12 +141,8 @@ impl Arc {
             // Spacing 2W/(8·2^l); the density is over the full turn's 2π.
             let h = 2.0 * self.half / f64::from(8u32 << l) / std::f64::consts::TAU;
             let now = [inner * h, dinner * h];
-            if let Some(prev) = last {
-                if (now[0] - prev[0]).abs() <= TOL_P
-                    && (now[1] - prev[1]).abs() <= TOL_D * now[1].abs()
-                {
-                    return Some(now);
-                }
+            if agree(last, now) {
+                return Some(now);
             }
             if l >= self.start {
                 last = Some(now);

@@ -38,6 +38,14 @@ const MAX_LEVEL: usize = 6;
 /// Directions in `[0, π)` at the finest level.
 const HALF: usize = 4 << MAX_LEVEL;
 
+/// Two successive sums `[P, P']` of a rule agree: `P` to [`TOL_P`], `P'` to
+/// [`TOL_D`] relative (`arc` uses the same test).
+pub(super) fn agree(prev: Option<[f64; 2]>, now: [f64; 2]) -> bool {
+    prev.is_some_and(|prev| {
+        (now[0] - prev[0]).abs() <= TOL_P && (now[1] - prev[1]).abs() <= TOL_D * now[1].abs()
+    })
+}
+
 /// Cos and sin of the directions in `[0, π)`, coarse levels first: level 0 is
 /// `kπ/4` (k < 4), level `l ≥ 1` adds the odd multiples of `π/(4·2^l)`; the
 /// first `4·2^l` entries are the rule of level `l`.
@@ -198,14 +206,8 @@ impl Polar {
             done = n;
             // The trapezoidal rule over the full turn: 2n directions.
             let now = [sum / (2 * n) as f64, dsum / (2 * n) as f64];
-            if l > self.start {
-                if let Some(prev) = last {
-                    if (now[0] - prev[0]).abs() <= TOL_P
-                        && (now[1] - prev[1]).abs() <= TOL_D * now[1].abs()
-                    {
-                        return Some(now);
-                    }
-                }
+            if agree(last, now) {
+                return Some(now);
             }
             if l >= self.start {
                 last = Some(now);

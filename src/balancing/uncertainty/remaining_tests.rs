@@ -183,6 +183,27 @@ fn residuals(n: usize, tau: f64, sigma: f64, rng: &mut StdRng) -> Vec<Complex64>
 
 const TAUS: [f64; 5] = [0.0, 0.5, 1.0, 2.0, 30.0];
 
+/// Jobs per coverage figure.
+const JOBS: usize = 150;
+
+/// The share of rows held, averaged over [`JOBS`] jobs whose true residuals
+/// `residuals` draws (`known`: the shrinkage weight, else estimated).
+fn held_over_jobs(
+    l: &Matrix4<f64>,
+    cov: &Covs,
+    known: Option<f64>,
+    rng: &mut StdRng,
+    mut residuals: impl FnMut(&mut StdRng) -> Vec<Complex64>,
+) -> f64 {
+    (0..JOBS)
+        .map(|_| {
+            let r = residuals(rng);
+            job(l, cov, &r, known, rng)
+        })
+        .sum::<f64>()
+        / JOBS as f64
+}
+
 #[test]
 fn knowing_the_residuals_spread_the_bound_holds_95_percent_exactly() {
     // The Bayes predictive of the module doc with the true weight: the
@@ -197,18 +218,9 @@ fn knowing_the_residuals_spread_the_bound_holds_95_percent_exactly() {
         let sigma = (cov.1.trace() / 2.0).sqrt();
         for tau in TAUS {
             let s = (tau * tau / 2.0) / (1.0 + tau * tau / 2.0);
-            let held = (0..150)
-                .map(|_| {
-                    job(
-                        &l,
-                        cov,
-                        &residuals(40, tau, sigma, &mut rng),
-                        Some(s),
-                        &mut rng,
-                    )
-                })
-                .sum::<f64>()
-                / 150.0;
+            let held = held_over_jobs(&l, cov, Some(s), &mut rng, |rng| {
+                residuals(40, tau, sigma, rng)
+            });
             if (held - 0.95).abs() > 0.0125 {
                 failures.push(format!("case {k}, τ = {tau}: {held}"));
             }
@@ -234,18 +246,9 @@ fn with_the_spread_estimated_from_forty_rows_the_bound_holds_near_95_percent() {
         let sigma = (cov.1.trace() / 2.0).sqrt();
         let mut row = Vec::new();
         for tau in TAUS {
-            let held = (0..150)
-                .map(|_| {
-                    job(
-                        &l,
-                        cov,
-                        &residuals(40, tau, sigma, &mut rng),
-                        None,
-                        &mut rng,
-                    )
-                })
-                .sum::<f64>()
-                / 150.0;
+            let held = held_over_jobs(&l, cov, None, &mut rng, |rng| {
+                residuals(40, tau, sigma, rng)
+            });
             row.push(held);
             let low = if k == 1 && tau > 0.0 && tau < 30.0 {
                 0.875
@@ -279,10 +282,7 @@ fn where_a_few_rows_carry_all_the_residual_the_rows_together_still_hold_near_95_
                     Complex64::from_polar(size, a as f64)
                 })
                 .collect();
-            let held = (0..150)
-                .map(|_| job(&l, cov, &r, None, &mut rng))
-                .sum::<f64>()
-                / 150.0;
+            let held = held_over_jobs(&l, cov, None, &mut rng, |_| r.clone());
             eprintln!("case {k}, 8 rows at {far}σ: {held:.3}");
             if !(0.89..=0.975).contains(&held) {
                 failures.push(format!("case {k}, far {far}: {held}"));

@@ -18,7 +18,7 @@
 //! comparing only levels fine enough to see a mass thin across (`σ₂/|μ|` in
 //! angle); one too thin for the finest level goes to the quadrature.
 
-use super::polar::{agree, Ray};
+use super::polar::{agree, Axes, Ray};
 
 /// The mean is far from the origin when `|μ| ≥ FAR σ₁`.
 const FAR: f64 = 8.0;
@@ -32,10 +32,7 @@ const MAX_LEVEL: usize = 7;
 /// their levels (level 0: the 9 nodes from end to end; level `l ≥ 1`: the
 /// `8·2^(l−1)` midpoints it adds).
 pub(super) struct Arc {
-    mu: [f64; 2],
-    inv_var: [f64; 2],
-    k: f64,
-    c: f64,
+    axes: Axes,
     centre: f64,
     half: f64,
     /// The first level whose sum is compared with the next one.
@@ -63,10 +60,7 @@ impl Arc {
         let spacing = |l: usize| 2.0 * half / f64::from(8u32 << l);
         let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
-            mu: [mu1, mu2],
-            inv_var: [1.0 / (s1 * s1), 1.0 / (s2 * s2)],
-            k: 1.0 / (s1 * s2),
-            c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
+            axes: Axes::new(mu1, mu2, s1, s2),
             centre: mu2.atan2(mu1),
             half,
             start,
@@ -101,9 +95,7 @@ impl Arc {
             let (mut s, mut c) = (self.centre + self.half * Self::node(i)).sin_cos();
             let (ds, dc) = (self.half * dx).sin_cos();
             for _ in i..end {
-                let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
-                let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
-                self.rays.push(Ray::off_centre(a, b, self.c, self.k));
+                self.rays.push(self.axes.ray(c, s));
                 (c, s) = (c * dc - s * ds, s * dc + c * ds);
             }
             i = end;

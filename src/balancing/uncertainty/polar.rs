@@ -89,7 +89,7 @@ pub(super) struct Ray {
 impl Ray {
     /// The direction with `A`, `B` of the module doc, for `C` = `c` and
     /// `1/(σ₁σ₂)` = `k`.
-    pub(super) fn off_centre(a: f64, b: f64, c: f64, k: f64) -> Ray {
+    fn off_centre(a: f64, b: f64, c: f64, k: f64) -> Ray {
         let r0 = b / a;
         let sa = a.sqrt();
         let e = (c - b * r0).max(0.0);
@@ -119,12 +119,43 @@ impl Ray {
     }
 }
 
-/// The rule for one row: the rays computed so far, coarse levels first.
-pub(super) struct Polar {
+/// `N((μ₁, μ₂), diag(σ₁², σ₂²))` as the rays need it: `μ`, `1/σ²`,
+/// `1/(σ₁σ₂)` and `C` of the module doc (`arc` shares it).
+#[derive(Clone, Copy)]
+pub(super) struct Axes {
     mu: [f64; 2],
     inv_var: [f64; 2],
     k: f64,
     c: f64,
+}
+
+impl Axes {
+    pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Self {
+        Self {
+            mu: [mu1, mu2],
+            inv_var: [1.0 / (s1 * s1), 1.0 / (s2 * s2)],
+            k: 1.0 / (s1 * s2),
+            c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
+        }
+    }
+
+    /// `A` and `B` of the module doc for the direction `(cos θ, sin θ)`.
+    fn ab(&self, c: f64, s: f64) -> (f64, f64) {
+        let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
+        let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
+        (a, b)
+    }
+
+    /// The ray of the direction `(cos θ, sin θ)` for a mean off the origin.
+    pub(super) fn ray(&self, c: f64, s: f64) -> Ray {
+        let (a, b) = self.ab(c, s);
+        Ray::off_centre(a, b, self.c, self.k)
+    }
+}
+
+/// The rule for one row: the rays computed so far, coarse levels first.
+pub(super) struct Polar {
+    axes: Axes,
     central: bool,
     start: usize,
     /// Filled lazily up to the finest level used (a zeroed array of all
@@ -149,10 +180,7 @@ impl Polar {
         let spacing = |l: usize| std::f64::consts::TAU / f64::from(8u32 << l);
         let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
-            mu: [mu1, mu2],
-            inv_var: [1.0 / (s1 * s1), 1.0 / (s2 * s2)],
-            k: 1.0 / (s1 * s2),
-            c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
+            axes: Axes::new(mu1, mu2, s1, s2),
             central: mu1 == 0.0 && mu2 == 0.0,
             start,
             rays: Vec::with_capacity(4 << (start + 1)),
@@ -163,20 +191,19 @@ impl Polar {
     fn build(&mut self, n: usize) {
         let table = directions();
         for &(c, s) in &table[self.rays.len()..n.max(self.rays.len())] {
-            let a = c * c * self.inv_var[0] + s * s * self.inv_var[1];
-            let b = self.mu[0] * c * self.inv_var[0] + self.mu[1] * s * self.inv_var[1];
             let ray = if self.central {
+                let (a, _) = self.axes.ab(c, s);
                 Ray {
                     a,
                     inv_a: 1.0 / a,
                     sa: a.sqrt(),
                     r0: 0.0,
-                    k: self.k,
+                    k: self.axes.k,
                     e0: 1.0,
                     c0: 0.5,
                 }
             } else {
-                Ray::off_centre(a, b, self.c, self.k)
+                self.axes.ray(c, s)
             };
             self.rays.push(ray);
         }

@@ -1,6 +1,7 @@
 //! Issue 15: the restructured solve (thin SVD through QR, the active-set
-//! min-max with its dense barrier method) gives the corrections of the code
-//! before it, on many seeded random jobs generated here.
+//! min-max whose working sets a primal-dual interior-point method solves,
+//! `conic/primal_dual.rs`) gives the corrections of the code before it, on
+//! many seeded random jobs generated here.
 //!
 //! The old answers in `tests/data/perf/old_answers.json` were computed by the
 //! release `fieldbal solve` of commit 5e3a66a (the parent of the first issue
@@ -19,8 +20,9 @@ use serde_json::{json, Value};
 /// (below 10²): 10⁻⁹ of the largest correction.
 const LS_TOL: f64 = 1e-9;
 /// Min-max: the optimum value is known to the solvers' tolerance (10⁻⁸ of
-/// max |b|, compared to 10⁻⁷ of itself or of 1 µm where the fit is exact); where fewer than `2n + 1` rows are active the objective is flat
-/// to second order, so the correction is known to about √10⁻⁸ = 10⁻⁴ of its
+/// max |b|, compared to 10⁻⁷ of itself or of 1 µm where the fit is exact);
+/// where fewer than `2n + 1` rows are active the objective is flat to second
+/// order, so the correction is known to about √10⁻⁸ = 10⁻⁴ of its
 /// size (as in tests/minmax_equivalence.rs).
 const MINMAX_VALUE_TOL: f64 = 1e-7;
 const MINMAX_TOL: f64 = 1e-4;

@@ -73,7 +73,7 @@ pub fn reading_covariance(
     amplitude_noise_pct: f64,
     phase_noise_deg: f64,
 ) -> Matrix2<f64> {
-    let a = y.norm();
+    let a = crate::balancing::phasor::modulus(y);
     let sr = amplitude_noise_pct / 100.0 * a;
     let st = a * phase_noise_deg.to_radians();
     if a == 0.0 {

@@ -5,6 +5,7 @@ use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
 use crate::balancing::factor::Factored;
+use crate::balancing::phasor::modulus;
 
 /// Below this significance factor a plane counts as dependent (Darlow).
 pub const SIGNIFICANCE_THRESHOLD: f64 = 0.2;
@@ -118,9 +119,9 @@ pub fn trial_effect_ratio(
 ) -> f64 {
     let trial = t.row(j).iter().map(|x| x.norm()).fold(0.0, f64::max);
     rows.iter()
-        .map(|&a| (a, y0[a].norm()))
+        .map(|&a| (a, modulus(y0[a])))
         .filter(|&(_, y)| y > 0.0)
-        .map(|(a, y)| w[(a, j)].norm() * trial / y)
+        .map(|(a, y)| modulus(w[(a, j)]) * trial / y)
         .fold(0.0, f64::max)
 }
 

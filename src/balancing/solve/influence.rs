@@ -5,6 +5,7 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 
 use crate::balancing::error::InputError;
+use crate::balancing::factor::cmul;
 use crate::balancing::validate::Checked;
 
 /// Relative singular value below which the trial weights count as dependent.
@@ -70,8 +71,8 @@ pub fn influence_and_pinv(
     let t_pinv = svd
         .pseudo_inverse(0.0)
         .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
-    // nalgebra's own product, not `factor::cmul`: `W` stays bit for bit what it
-    // was, and with it the rounding that decides the significance factors'
-    // first pivot (a tie of unit norms).
-    Ok((changes(checked) * &t_pinv, t_pinv))
+    // Four real products (`factor::cmul`, issue 15): `W` is rounded in another
+    // order than nalgebra's complex product; the significance factors' first
+    // pivot, a tie of unit norms, is settled by plane order, not by rounding.
+    Ok((cmul(&changes(checked), &t_pinv), t_pinv))
 }

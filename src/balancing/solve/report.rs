@@ -5,7 +5,7 @@ use crate::balancing::diagnostics::{
     trial_effect_ratio, SIGNIFICANCE_THRESHOLD, TRIAL_EFFECT_THRESHOLD,
 };
 use crate::balancing::model::{Objective, SolveOptions};
-use crate::balancing::phasor::{reading_out, weight_out};
+use crate::balancing::phasor::{modulus, reading_out, weight_out};
 use crate::balancing::practical::{grade_value, permissible_unbalance_gmm, split_places};
 use crate::balancing::solution::{
     Correction, InfluenceCoefficient, IsoTolerance, PlaneDiagnostics, Residual, Solution, Summary,
@@ -146,7 +146,7 @@ pub fn solution(fit: &Fit, options: &SolveOptions) -> Solution {
                 speed_rpm: row.speed_rpm,
                 sensor: sensor.id.clone(),
                 unit: sensor.unit,
-                amplitude_before: checked.y[(a, 0)].norm(),
+                amplitude_before: modulus(checked.y[(a, 0)]),
                 amplitude,
                 phase_deg,
                 amplitude_95: None,
@@ -182,8 +182,8 @@ pub fn solution(fit: &Fit, options: &SolveOptions) -> Solution {
     }
 
     let rows = &fit.selection.rows;
-    let (rms_before, max_before) = rms_max(rows, |a| checked.y[(a, 0)].norm());
-    let (rms_after, max_after) = rms_max(rows, |a| fit.residual[a].norm());
+    let (rms_before, max_before) = rms_max(rows, |a| modulus(checked.y[(a, 0)]));
+    let (rms_after, max_after) = rms_max(rows, |a| modulus(fit.residual[a]));
 
     // One unit or several: compared, not formatted per row (issue 15).
     let unit_of = |a: usize| session.sensors[checked.rows[a].sensor].unit;

@@ -122,11 +122,13 @@ pub fn solve_checked<'a>(
 
     let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
     // One QR of `A` for the solve, the report and the uncertainty (issue 15).
-    // The significance factors stay on `A` itself: their first pivot is a
-    // tie of unit norms that rounding decides, and on `R` rounding decides
-    // it differently, which changes every factor.
+    // The significance factors too: Gram–Schmidt of `A`'s unit columns sees
+    // only their inner products, which `A = Q R` keeps (`Q` has orthonormal
+    // columns), so it runs on the `q × q` `R` instead of the `rows × q` `A`.
+    // Their first pivot, a tie of unit norms, is settled by plane order within
+    // `PIVOT_TIE`, not by the rounding that differs between the two.
     let factor_all = Factored::of(&a_all);
-    let factors = significance_factors(&a_all);
+    let factors = significance_factors(factor_all.small());
     let drop = options.drop_dependent_planes.unwrap_or(false);
     let (planes, dropped): (Vec<usize>, Vec<usize>) = if drop {
         let keep = |k: &usize| factors[*k] >= SIGNIFICANCE_THRESHOLD;

@@ -12,7 +12,7 @@ use super::{
 use crate::balancing::diagnostics::undetermined;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, SolveOptions};
-use crate::balancing::phasor::reading_in;
+use crate::balancing::phasor::{modulus, reading_in};
 use crate::balancing::solution::{Solution, Warning};
 use crate::balancing::solve::Fit;
 use crate::balancing::validate::Checked;
@@ -190,7 +190,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             .rows
             .iter()
             .filter(|&&a| prop.effect_sd[(a, j)] > 0.0)
-            .map(|&a| fit.w[(a, j)].norm() * tau / prop.effect_sd[(a, j)])
+            .map(|&a| modulus(fit.w[(a, j)]) * tau / prop.effect_sd[(a, j)])
             .reduce(f64::max);
         diag.trial_effect_snr = snr;
         let Some(snr) = snr.filter(|&s| s < SNR_THRESHOLD) else {

@@ -16,6 +16,7 @@ use super::error::InputError;
 use super::model::Objective;
 
 mod active_set;
+mod kkt;
 mod primal_dual;
 mod program;
 mod soc;

@@ -17,19 +17,20 @@
 //!
 //! The reduced system `Σ Gᵢᵀ Wᵢ⁻² Gᵢ Δz = r` is `(2n+1) × (2n+1)` and dense
 //! (a Cholesky of the scaled cone Hessians, not of the least-squares normal
-//! equations); each row cone's share of its `y` block has rank two (the span
-//! of the row's real and imaginary coefficient vectors), so that block is
-//! one product `B Bᵀ` of a `2n × 2m` matrix, which nalgebra hands to
-//! `matrixmultiply`'s SIMD kernels. When the arithmetic fails (a Cholesky
+//! equations); each row cone adds a rank-two share to its `y` block (the
+//! span of the row's real and imaginary coefficient vectors), accumulated
+//! by explicit loops in `kkt.rs`. Every buffer is allocated once per solve
+//! ([`Work`]). When the arithmetic fails (a Cholesky
 //! that rounding has left indefinite, no convergence within [`BUDGET`]) the
 //! caller falls back to Clarabel, so the answer never depends on this
 //! solver's luck.
 
 use std::time::Instant;
 
-use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
+use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
+use super::kkt::{self, Program};
 use super::soc::{dot, jordan, jordan_div, max_step, Scaling, V3};
 use super::Limits;
 use crate::balancing::error::InputError;
@@ -46,105 +47,99 @@ const BUDGET: u32 = 80;
 /// Fraction of the way to the cone boundary a step may go.
 const STEP: f64 = 0.99;
 
-/// The program in the form `G z + s = h`, `s` in the product of cones, over
-/// `z = (Re y, Im y, t)`: row cone `a` is `s = (t, Re r_a, Im r_a)` with
-/// `Re r = re0 + pᵀ x`, `Im r = im0 + qᵀ x` (columns of `p`, `q`); bound
-/// cone `(k, m)` is `s = (m, Re y_k, Im y_k)`.
-struct Program<'a> {
-    n: usize,
-    re0: DVector<f64>,
-    im0: DVector<f64>,
-    p: DMatrix<f64>,
-    q: DMatrix<f64>,
-    bounds: &'a [(usize, f64)],
+fn add(u: &V3, v: &V3) -> V3 {
+    [u[0] + v[0], u[1] + v[1], u[2] + v[2]]
 }
 
-impl Program<'_> {
-    fn cones(&self) -> usize {
-        self.re0.len() + self.bounds.len()
+/// One Newton direction `(Δz, Δλ, Δs)`.
+struct Direction {
+    dz: Vec<f64>,
+    dl: Vec<V3>,
+    ds: Vec<V3>,
+}
+
+impl Direction {
+    fn new(dim: usize, cones: usize) -> Self {
+        Direction {
+            dz: vec![0.0; dim],
+            dl: vec![[0.0; 3]; cones],
+            ds: vec![[0.0; 3]; cones],
+        }
     }
 
-    /// `h`, one 3-vector per cone.
-    fn h(&self) -> Vec<V3> {
-        let rows = (0..self.re0.len()).map(|a| [0.0, self.re0[a], self.im0[a]]);
-        let bounds = self.bounds.iter().map(|&(_, mk)| [mk, 0.0, 0.0]);
-        rows.chain(bounds).collect()
+    /// The longest step from `(s, λ)` along this direction inside every cone.
+    fn longest(&self, s: &[V3], l: &[V3]) -> f64 {
+        (0..s.len()).fold(f64::INFINITY, |a, i| {
+            a.min(max_step(&s[i], &self.ds[i]))
+                .min(max_step(&l[i], &self.dl[i]))
+        })
+    }
+}
+
+/// The buffers of one iteration, allocated once per solve.
+struct Work {
+    rz: Vec<f64>,
+    rs: Vec<V3>,
+    sc: Vec<Scaling>,
+    v: Vec<V3>,
+    sq: Vec<[V3; 3]>,
+    chol: Vec<f64>,
+    /// The complementarity right side `v ∘ d` of the direction being solved.
+    d: Vec<V3>,
+    u: Vec<V3>,
+    gdz: Vec<V3>,
+    affine: Direction,
+    step: Direction,
+}
+
+impl Work {
+    fn new(dim: usize, cones: usize) -> Self {
+        Work {
+            rz: vec![0.0; dim],
+            rs: vec![[0.0; 3]; cones],
+            sc: Vec::with_capacity(cones),
+            v: vec![[0.0; 3]; cones],
+            sq: vec![[[0.0; 3]; 3]; cones],
+            chol: vec![0.0; dim * dim],
+            d: vec![[0.0; 3]; cones],
+            u: vec![[0.0; 3]; cones],
+            gdz: vec![[0.0; 3]; cones],
+            affine: Direction::new(dim, cones),
+            step: Direction::new(dim, cones),
+        }
     }
 
-    /// `G z` for every cone.
-    fn apply(&self, z: &DVector<f64>) -> Vec<V3> {
-        let n2 = 2 * self.n;
-        let head = z.rows(0, n2);
-        let re = self.p.tr_mul(&head);
-        let im = self.q.tr_mul(&head);
-        let rows = (0..self.re0.len()).map(|a| [-z[n2], -re[a], -im[a]]);
-        let bounds = self
-            .bounds
-            .iter()
-            .map(|&(k, _)| [0.0, -z[k], -z[self.n + k]]);
-        rows.chain(bounds).collect()
-    }
-
-    /// `Gᵀ u` for one 3-vector per cone.
-    fn apply_tr(&self, u: &[V3]) -> DVector<f64> {
-        let (n, m) = (self.n, self.re0.len());
-        let mut out = DVector::zeros(2 * n + 1);
-        let u1 = DVector::from_fn(m, |a, _| u[a][1]);
-        let u2 = DVector::from_fn(m, |a, _| u[a][2]);
-        let mut head = out.rows_mut(0, 2 * n);
-        head.gemv(-1.0, &self.p, &u1, 0.0);
-        head.gemv(-1.0, &self.q, &u2, 1.0);
-        out[2 * n] = -u[..m].iter().map(|v| v[0]).sum::<f64>();
-        for (&(k, _), v) in self.bounds.iter().zip(&u[m..]) {
-            out[k] -= v[1];
-            out[n + k] -= v[2];
+    /// The Newton direction for the right side `v ∘ d` into `affine` or
+    /// `step`: Δz from the reduced system,
+    /// Δλ = W⁻¹(W⁻¹(G Δz + r_s) + d), Δs = −r_s − G Δz.
+    fn direction(&mut self, prog: &Program, corrector: bool) {
+        let Work {
+            rz,
+            rs,
+            sc,
+            chol,
+            d,
+            u,
+            gdz,
+            affine,
+            step,
+            ..
+        } = self;
+        let out = if corrector { step } else { affine };
+        for (i, u) in u.iter_mut().enumerate() {
+            *u = sc[i].w_inv(&add(&sc[i].w_inv(&rs[i]), &d[i]));
         }
-        out
-    }
-
-    /// `Σ Gᵢᵀ Sᵢ Gᵢ` for the symmetric 3 × 3 `Sᵢ = Wᵢ⁻²`, factored.
-    fn normal(&self, sq: &[[V3; 3]]) -> Option<Cholesky<f64, Dyn>> {
-        let (n, m) = (self.n, self.re0.len());
-        let n2 = 2 * n;
-        let mut b = DMatrix::zeros(n2, 2 * m);
-        let mut bt = DMatrix::zeros(2 * m, n2);
-        let (mut hp, mut hq) = (DVector::zeros(m), DVector::zeros(m));
-        let mut tt = 0.0;
-        for (a, s) in sq[..m].iter().enumerate() {
-            // Gₐ = −(e_t; pᵀ; qᵀ): the y block is P S₁₁ Pᵀ with P = [p q] and
-            // S₁₁ the lower 2 × 2 block of S = L Lᵀ; the y–t column P S₁₀.
-            tt += s[0][0];
-            hp[a] = s[1][0];
-            hq[a] = s[2][0];
-            let l11 = s[1][1].sqrt();
-            let l21 = s[2][1] / l11;
-            let l22 = (s[2][2] - l21 * l21).max(0.0).sqrt();
-            let (p, q) = (self.p.column(a), self.q.column(a));
-            for k in 0..n2 {
-                let (u, v) = (l11 * p[k] + l21 * q[k], l22 * q[k]);
-                b[(k, 2 * a)] = u;
-                b[(k, 2 * a + 1)] = v;
-                bt[(2 * a, k)] = u;
-                bt[(2 * a + 1, k)] = v;
-            }
+        prog.apply_tr(u, &mut out.dz);
+        for (x, r) in out.dz.iter_mut().zip(rz.iter()) {
+            *x = -r - *x;
         }
-        let mut nm = DMatrix::zeros(n2 + 1, n2 + 1);
-        nm.view_mut((0, 0), (n2, n2)).gemm(1.0, &b, &bt, 0.0);
-        let mut col = nm.column_mut(n2);
-        let mut yt = col.rows_mut(0, n2);
-        yt.gemv(1.0, &self.p, &hp, 0.0);
-        yt.gemv(1.0, &self.q, &hq, 1.0);
-        for k in 0..n2 {
-            nm[(n2, k)] = nm[(k, n2)];
+        kkt::solve(chol, prog.dim(), &mut out.dz);
+        prog.apply(&out.dz, gdz);
+        for (i, g) in gdz.iter().enumerate() {
+            let g = add(g, &rs[i]);
+            out.dl[i] = sc[i].w_inv(&add(&sc[i].w_inv(&g), &d[i]));
+            out.ds[i] = g.map(|x| -x);
         }
-        nm[(n2, n2)] = tt;
-        for (&(k, _), s) in self.bounds.iter().zip(&sq[m..]) {
-            nm[(k, k)] += s[1][1];
-            nm[(n + k, n + k)] += s[2][2];
-            nm[(k, n + k)] += s[1][2];
-            nm[(n + k, k)] += s[2][1];
-        }
-        nm.cholesky()
     }
 }
 
@@ -159,40 +154,22 @@ pub(super) fn min_max(
     rows: &[usize],
     limits: Limits,
 ) -> Result<Option<(Vec<Complex64>, u32)>, InputError> {
-    let (n, m) = (a.ncols(), rows.len());
+    let prog = Program::new(a, b.as_slice(), bounds, rows);
+    let (n, m, dim, cones) = (prog.n, prog.m, prog.dim(), prog.cones());
     let n2 = 2 * n;
-    let mut prog = Program {
-        n,
-        re0: DVector::from_fn(m, |a, _| b[rows[a]].re),
-        im0: DVector::from_fn(m, |a, _| b[rows[a]].im),
-        p: DMatrix::zeros(n2, m),
-        q: DMatrix::zeros(n2, m),
-        bounds,
-    };
-    for (col, &i) in rows.iter().enumerate() {
-        for k in 0..n {
-            let c = a[(i, k)];
-            // r = b + Σ c_k (u_k + i v_k): Re = Σ Re c u − Im c v, Im = Σ Im c u + Re c v.
-            prog.p[(k, col)] = c.re;
-            prog.p[(n + k, col)] = -c.im;
-            prog.q[(k, col)] = c.im;
-            prog.q[(n + k, col)] = c.re;
-        }
-    }
-    let cones = prog.cones();
-    let h = prog.h();
-    let sub = |u: &V3, v: &V3| -> V3 { [u[0] - v[0], u[1] - v[1], u[2] - v[2]] };
+    let mut h = Vec::with_capacity(cones);
+    prog.h(&mut h);
     // Primal feasible: y = 0, t above every |b_a|; dual feasible: Σ λ_a0 = 1.
-    let mut z = DVector::zeros(n2 + 1);
-    z[n2] = 1.5 * prog.re0.zip_map(&prog.im0, f64::hypot).max() + 1e-3;
-    let mut s: Vec<V3> = h
-        .iter()
-        .zip(prog.apply(&z))
-        .map(|(h, g)| sub(h, &g))
-        .collect();
+    let mut z = vec![0.0; dim];
+    let largest = prog.r0.iter().map(|r| r[0].hypot(r[1]));
+    z[n2] = 1.5 * largest.fold(f64::NEG_INFINITY, f64::max) + 1e-3;
+    let mut s = vec![[0.0; 3]; cones];
+    prog.apply(&z, &mut s);
+    for (s, h) in s.iter_mut().zip(&h) {
+        *s = [h[0] - s[0], h[1] - s[1], h[2] - s[2]];
+    }
     let mut l: Vec<V3> = vec![[1.0 / m as f64, 0.0, 0.0]; cones];
-    let mut c = DVector::zeros(n2 + 1);
-    c[n2] = 1.0;
+    let mut w = Work::new(dim, cones);
     let start = Instant::now();
     for it in 0..limits.max_iter.min(BUDGET) {
         if start.elapsed().as_secs_f64() > limits.time_limit_s {
@@ -205,15 +182,15 @@ pub(super) fn min_max(
             ));
         }
         let gap: f64 = s.iter().zip(&l).map(|(s, l)| dot(s, l)).sum();
-        let rz = &c + prog.apply_tr(&l);
-        let rs: Vec<V3> = prog
-            .apply(&z)
-            .iter()
-            .zip(&s)
-            .zip(&h)
-            .map(|((g, s), h)| std::array::from_fn(|i| g[i] + s[i] - h[i]))
-            .collect();
-        let feas = rs.iter().flatten().fold(rz.amax(), |f, x| f.max(x.abs()));
+        // r_z = c + Gᵀλ with c = e_t; r_s = G z + s − h.
+        prog.apply_tr(&l, &mut w.rz);
+        w.rz[n2] += 1.0;
+        prog.apply(&z, &mut w.rs);
+        for ((r, s), h) in w.rs.iter_mut().zip(&s).zip(&h) {
+            *r = std::array::from_fn(|i| r[i] + s[i] - h[i]);
+        }
+        let feas = w.rz.iter().chain(w.rs.iter().flatten());
+        let feas = feas.fold(0.0_f64, |f, x| f.max(x.abs()));
         if !(gap.is_finite() && feas.is_finite()) {
             return Ok(None);
         }
@@ -221,81 +198,48 @@ pub(super) fn min_max(
             let y = (0..n).map(|k| Complex64::new(z[k], z[n + k])).collect();
             return Ok(Some((y, it)));
         }
-        let Some(sc) = s
-            .iter()
-            .zip(&l)
-            .map(|(s, l)| Scaling::of(s, l))
-            .collect::<Option<Vec<_>>>()
-        else {
+        w.sc.clear();
+        for (s, l) in s.iter().zip(&l) {
+            let Some(sc) = Scaling::of(s, l) else {
+                return Ok(None);
+            };
+            w.sc.push(sc);
+        }
+        for (i, sc) in w.sc.iter().enumerate() {
+            w.v[i] = sc.w(&l[i]);
+            w.sq[i] = sc.w_inv_sq();
+            // The predictor (affine scaling) direction's right side: −v ∘ v.
+            w.d[i] = w.v[i].map(|x| -x);
+        }
+        if !prog.normal(&w.sq, &mut w.chol) {
             return Ok(None);
-        };
-        let v: Vec<V3> = sc.iter().zip(&l).map(|(w, l)| w.w(l)).collect();
-        let unit = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        let sq: Vec<[V3; 3]> = sc
-            .iter()
-            .map(|w| unit.map(|e| w.w_inv(&w.w_inv(&e))))
-            .collect();
-        let Some(chol) = prog.normal(&sq) else {
-            return Ok(None);
-        };
-        // The Newton direction for the complementarity right side `v ∘ d`:
-        // Δz from the reduced system, Δλ = W⁻¹(W⁻¹(G Δz + r_s) + d), Δs = −r_s − G Δz.
-        let direction = |d: &[V3]| {
-            let u: Vec<V3> = (0..cones)
-                .map(|i| {
-                    let x = sc[i].w_inv(&rs[i]);
-                    sc[i].w_inv(&[x[0] + d[i][0], x[1] + d[i][1], x[2] + d[i][2]])
-                })
-                .collect();
-            let dz = chol.solve(&(-&rz - prog.apply_tr(&u)));
-            let gdz = prog.apply(&dz);
-            let dl: Vec<V3> = (0..cones)
-                .map(|i| {
-                    let x = sc[i].w_inv(&[
-                        gdz[i][0] + rs[i][0],
-                        gdz[i][1] + rs[i][1],
-                        gdz[i][2] + rs[i][2],
-                    ]);
-                    sc[i].w_inv(&[x[0] + d[i][0], x[1] + d[i][1], x[2] + d[i][2]])
-                })
-                .collect();
-            let ds: Vec<V3> = (0..cones)
-                .map(|i| std::array::from_fn(|j| -rs[i][j] - gdz[i][j]))
-                .collect();
-            (dz, dl, ds)
-        };
-        let longest = |dl: &[V3], ds: &[V3]| {
-            (0..cones).fold(f64::INFINITY, |a, i| {
-                a.min(max_step(&s[i], &ds[i])).min(max_step(&l[i], &dl[i]))
-            })
-        };
-        // Predictor (affine scaling), then Mehrotra's centring and corrector.
-        let affine: Vec<V3> = v.iter().map(|v| v.map(|x| -x)).collect();
-        let (_, dl_a, ds_a) = direction(&affine);
-        let sigma = (1.0 - longest(&dl_a, &ds_a).min(1.0)).powi(3);
+        }
+        w.direction(&prog, false);
+        // Mehrotra's centring and corrector.
+        let sigma = (1.0 - w.affine.longest(&s, &l).min(1.0)).powi(3);
         let mu = gap / cones as f64;
-        let d: Vec<V3> = (0..cones)
-            .map(|i| {
-                let vv = jordan(&v[i], &v[i]);
-                let corr = jordan(&sc[i].w_inv(&ds_a[i]), &sc[i].w(&dl_a[i]));
-                let rc = [
-                    -vv[0] + sigma * mu - corr[0],
-                    -vv[1] - corr[1],
-                    -vv[2] - corr[2],
-                ];
-                jordan_div(&v[i], &rc)
-            })
-            .collect();
-        let (dz, dl, ds) = direction(&d);
-        let alpha = (STEP * longest(&dl, &ds)).min(1.0);
+        for (i, (v, sc)) in w.v.iter().zip(&w.sc).enumerate() {
+            let vv = jordan(v, v);
+            let corr = jordan(&sc.w_inv(&w.affine.ds[i]), &sc.w(&w.affine.dl[i]));
+            let rc = [
+                -vv[0] + sigma * mu - corr[0],
+                -vv[1] - corr[1],
+                -vv[2] - corr[2],
+            ];
+            w.d[i] = jordan_div(v, &rc);
+        }
+        w.direction(&prog, true);
+        let alpha = (STEP * w.step.longest(&s, &l)).min(1.0);
         if !(alpha.is_finite() && alpha > 0.0) {
             return Ok(None);
         }
-        z.axpy(alpha, &dz, 1.0);
+        for (z, dz) in z.iter_mut().zip(&w.step.dz) {
+            *z += alpha * dz;
+        }
         for i in 0..cones {
             for j in 0..3 {
-                s[i][j] += alpha * ds[i][j];
-                l[i][j] += alpha * dl[i][j];
+                s[i][j] += alpha * w.step.ds[i][j];
+                l[i][j] += alpha * w.step.dl[i][j];
             }
         }
     }

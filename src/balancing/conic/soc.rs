@@ -15,6 +15,9 @@ pub(super) fn dot(u: &V3, v: &V3) -> f64 {
 pub(super) struct Scaling {
     beta: f64,
     w: V3,
+    /// `1/β` and `1/(1 + w₀)`, kept so that applying `W` divides nothing.
+    inv_beta: f64,
+    inv_1w0: f64,
 }
 
 impl Scaling {
@@ -30,14 +33,19 @@ impl Scaling {
         ];
         let beta = (sn / ln).sqrt();
         let ok = beta.is_finite() && beta > 0.0 && w.iter().all(|x| x.is_finite());
-        ok.then_some(Scaling { beta, w })
+        ok.then_some(Scaling {
+            beta,
+            w,
+            inv_beta: 1.0 / beta,
+            inv_1w0: 1.0 / (1.0 + w[0]),
+        })
     }
 
     /// `H u` (`sign` = 1) or `H⁻¹ u` (`sign` = −1), times `f`.
     fn apply(&self, u: &V3, sign: f64, f: f64) -> V3 {
         let w = &self.w;
         let w1u1 = w[1] * u[1] + w[2] * u[2];
-        let k = w1u1 / (1.0 + w[0]);
+        let k = w1u1 * self.inv_1w0;
         [
             f * (w[0] * u[0] + sign * w1u1),
             f * (sign * u[0] * w[1] + u[1] + k * w[1]),
@@ -48,7 +56,18 @@ impl Scaling {
         self.apply(u, 1.0, self.beta)
     }
     pub(super) fn w_inv(&self, u: &V3) -> V3 {
-        self.apply(u, -1.0, 1.0 / self.beta)
+        self.apply(u, -1.0, self.inv_beta)
+    }
+
+    /// `W⁻²` as a matrix: `H(w)` squares to `2wwᵀ − J` (`J = diag(1, −1, −1)`,
+    /// `w` on the unit hyperboloid) and `H⁻¹ = H(w̄)`, `w̄ = (w₀, −w₁)`.
+    pub(super) fn w_inv_sq(&self) -> [V3; 3] {
+        let f = self.inv_beta * self.inv_beta;
+        let wb = [self.w[0], -self.w[1], -self.w[2]];
+        let j = [1.0, -1.0, -1.0];
+        std::array::from_fn(|r| {
+            std::array::from_fn(|c| f * (2.0 * wb[r] * wb[c] - if r == c { j[r] } else { 0.0 }))
+        })
     }
 }
 
@@ -92,4 +111,22 @@ pub(super) fn max_step(x: &V3, d: &V3) -> f64 {
         }
     }
     amax
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_closed_form_inverse_square_of_the_scaling_matches_applying_it_twice() {
+        let sc = Scaling::of(&[2.0, 0.5, -1.2], &[1.5, -0.3, 0.9]).unwrap();
+        let sq = sc.w_inv_sq();
+        let unit = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        for (c, e) in unit.iter().enumerate() {
+            let col = sc.w_inv(&sc.w_inv(e));
+            for r in 0..3 {
+                assert!((sq[r][c] - col[r]).abs() < 1e-12, "{r},{c}");
+            }
+        }
+    }
 }

@@ -19,11 +19,23 @@
 //! doublings, or the mass is too narrow in angle for the coarse rule to see
 //! it, the caller falls back to the adaptive quadrature.
 //!
+//! Off the origin the integrand is a bump around the mean's direction θ₀,
+//! about `σ_t/|μ|` wide (`σ_t` the spread across μ), and equally spaced
+//! directions waste most of their rays where there is no mass (a row 2–8σ
+//! out needed 256 to 512 of them). The rule is therefore taken in `φ` with
+//! `tan((θ − θ₀)/2) = s tan(φ/2)`, `s = min(1, 2σ_t/|μ|)`: a map of the
+//! circle onto itself, analytic and periodic, so the trapezoidal rule in φ
+//! still converges geometrically, with the nodes packed `s` times closer
+//! near θ₀ and the bump about two units wide in φ (the weight is
+//! `θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2))`). Rows 2–13σ out converge at 64
+//! nodes (issue 15, session 6). The guard against a coarse rule stepping
+//! over a thin mass compares the spacing at θ₀.
+//!
 //! Everything that does not depend on ρ (per direction `A`, `r₀`, `e^{−E/2}`,
-//! `e^{−½A r₀²}`, `Φ(−√A r₀)`) is computed once per row and reused by every
-//! Newton step; a direction and its opposite share `A` and `E` (`r₀` changes
-//! sign). Per step and direction: one exponential for `μ = 0`, two
-//! exponentials and a `Φ` otherwise.
+//! `Φ(−√A r₀)`; `e^{−E/2} e^{−½A r₀²} = e^{−C/2}` is the same for all) is
+//! computed once per row and reused by every Newton step. Per step and
+//! direction: one exponential for `μ = 0`, an exponential and a `Φ`
+//! otherwise.
 
 use std::sync::OnceLock;
 
@@ -33,10 +45,13 @@ use super::region::normal_cdf;
 const TOL_P: f64 = 1e-10;
 /// Agreement of two successive sums of the density, relative.
 const TOL_D: f64 = 1e-8;
-/// Level `l` has `8·2^l` directions over the full turn; the finest has 512.
+/// Level `l` has `8·2^l` directions over the full turn (off the origin:
+/// nodes of the mapped rule); the finest has 512.
 const MAX_LEVEL: usize = 6;
-/// Directions in `[0, π)` at the finest level.
-const HALF: usize = 4 << MAX_LEVEL;
+/// Entries of the direction table: the off-centre rule's finest level.
+const HALF: usize = 8 << MAX_LEVEL;
+/// The map's squeeze over the mass's angular spread (module doc).
+const SQUEEZE: f64 = 2.0;
 
 /// Two successive sums `[P, P']` of a rule agree: `P` to [`TOL_P`], `P'` to
 /// [`TOL_D`] relative (`arc` uses the same test).
@@ -48,13 +63,15 @@ pub(super) fn agree(prev: Option<[f64; 2]>, now: [f64; 2]) -> bool {
 
 /// Cos and sin of the directions in `[0, π)`, coarse levels first: level 0 is
 /// `kπ/4` (k < 4), level `l ≥ 1` adds the odd multiples of `π/(4·2^l)`; the
-/// first `4·2^l` entries are the rule of level `l`.
+/// first `4·2^l` entries are the centred rule's level `l`, and, as the
+/// half-angles `φ/2` of the nodes `φ = 2πj/(8·2^l)`, the first `8·2^l` are
+/// the off-centre rule's.
 fn directions() -> &'static [(f64, f64); HALF] {
     static TABLE: OnceLock<[(f64, f64); HALF]> = OnceLock::new();
     TABLE.get_or_init(|| {
         let mut t = [(0.0, 0.0); HALF];
         let mut n = 0;
-        for l in 0..=MAX_LEVEL {
+        for l in 0..=MAX_LEVEL + 1 {
             // (multiple of `step`, step): kπ/4, then the odd multiples of π/(4·2^l).
             let step = std::f64::consts::PI / f64::from(4u32 << l);
             let count: u32 = if l == 0 { 4 } else { 4 << (l - 1) };
@@ -76,46 +93,53 @@ pub(super) struct Ray {
     a: f64,
     inv_a: f64,
     sa: f64,
-    /// `r₀` of the direction θ (the opposite one has `−r₀`).
+    /// `r₀` of the direction.
     r0: f64,
-    /// `e^{−E/2}/(σ₁σ₂)`.
+    /// `k = e^{−E/2}/(σ₁σ₂)` (times the node's weight, where there is one).
     k: f64,
-    /// `e^{−½A r₀²}`.
-    e0: f64,
-    /// `Φ(−√A r₀)` (the opposite direction's is `1 −` this).
+    /// `k e^{−½A r₀²}`, which is `e^{−C/2}/(σ₁σ₂)` for every direction
+    /// (`E + A r₀² = C`): no exponential per ray.
+    ke0: f64,
+    /// `k r₀ √(2π/A)`.
+    kphi: f64,
+    /// `Φ(−√A r₀)`.
     c0: f64,
 }
 
 impl Ray {
-    /// The direction with `A`, `B` of the module doc, for `C` = `c` and
-    /// `1/(σ₁σ₂)` = `k`.
-    fn off_centre(a: f64, b: f64, c: f64, k: f64) -> Ray {
+    /// The direction with `A`, `B` of the module doc, for `C` = `c`,
+    /// `1/(σ₁σ₂)` = `k` and `e^{−C/2}/(σ₁σ₂)` = `kc`.
+    fn off_centre(a: f64, b: f64, c: f64, k: f64, kc: f64) -> Ray {
         let r0 = b / a;
         let sa = a.sqrt();
         let e = (c - b * r0).max(0.0);
+        let k = (-0.5 * e).exp() * k;
         Ray {
             a,
             inv_a: 1.0 / a,
             sa,
             r0,
-            k: (-0.5 * e).exp() * k,
-            e0: (-0.5 * a * r0 * r0).exp(),
+            k,
+            ke0: kc,
+            kphi: k * r0 * std::f64::consts::TAU.sqrt() / sa,
             c0: normal_cdf(-sa * r0),
         }
     }
 
-    /// [`Ray::along`] this direction (not its opposite).
-    pub(super) fn ahead(&self, rho: f64) -> [f64; 2] {
-        self.along(rho, self.r0, self.c0)
+    /// The ray with its contributions weighted by `w`.
+    fn weighted(mut self, w: f64) -> Ray {
+        self.k *= w;
+        self.ke0 *= w;
+        self.kphi *= w;
+        self
     }
 
     /// `k ·` the integral along the ray from 0 to ρ, and `k ·` its derivative in ρ.
-    pub(super) fn along(&self, rho: f64, r0: f64, c0: f64) -> [f64; 2] {
-        let t = self.sa * (rho - r0);
+    pub(super) fn ahead(&self, rho: f64) -> [f64; 2] {
+        let t = self.sa * (rho - self.r0);
         let e = (-0.5 * t * t).exp();
-        let along = (self.e0 - e) * self.inv_a
-            + r0 * std::f64::consts::TAU.sqrt() / self.sa * (normal_cdf(t) - c0);
-        [self.k * along, self.k * rho * e]
+        let along = (self.ke0 - self.k * e) * self.inv_a + self.kphi * (normal_cdf(t) - self.c0);
+        [along, self.k * rho * e]
     }
 }
 
@@ -127,15 +151,20 @@ pub(super) struct Axes {
     inv_var: [f64; 2],
     k: f64,
     c: f64,
+    /// `e^{−C/2}/(σ₁σ₂)`.
+    kc: f64,
 }
 
 impl Axes {
     pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Self {
+        let c = mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2);
+        let k = 1.0 / (s1 * s2);
         Self {
             mu: [mu1, mu2],
             inv_var: [1.0 / (s1 * s1), 1.0 / (s2 * s2)],
-            k: 1.0 / (s1 * s2),
-            c: mu1 * mu1 / (s1 * s1) + mu2 * mu2 / (s2 * s2),
+            k,
+            c,
+            kc: (-0.5 * c).exp() * k,
         }
     }
 
@@ -149,7 +178,7 @@ impl Axes {
     /// The ray of the direction `(cos θ, sin θ)` for a mean off the origin.
     pub(super) fn ray(&self, c: f64, s: f64) -> Ray {
         let (a, b) = self.ab(c, s);
-        Ray::off_centre(a, b, self.c, self.k)
+        Ray::off_centre(a, b, self.c, self.k, self.kc)
     }
 }
 
@@ -158,8 +187,14 @@ pub(super) struct Polar {
     axes: Axes,
     central: bool,
     start: usize,
+    /// Off the origin: `(cos θ₀, sin θ₀)` of the mean's direction and the
+    /// squeeze `s` of the map that gathers the nodes there (module doc).
+    towards: (f64, f64),
+    squeeze: f64,
     /// Filled lazily up to the finest level used (a zeroed array of all
-    /// [`HALF`] cost more than the whole rule for a typical row).
+    /// [`HALF`] cost more than the whole rule for a typical row). Centred:
+    /// one ray per direction in `[0, π)`; off the origin: one per node of the
+    /// mapped rule, its weight `θ'(φ)` folded into `k`.
     rays: Vec<Ray>,
 }
 
@@ -169,27 +204,48 @@ impl Polar {
     /// quadrature is used).
     pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Option<Self> {
         // Angular width of the mass seen from the origin: at least σ₂ over
-        // the larger of |μ| and σ₁. Start where the spacing is at most twice
-        // that, so that no coarse rule can step over all of the mass and
-        // agree with the next by both missing it.
+        // the larger of |μ| and σ₁. Start where the spacing (off the origin:
+        // at the mean's direction, where the map packs the nodes closest) is
+        // at most twice that, so that no coarse rule can step over all of
+        // the mass and agree with the next by both missing it.
         let m = mu1.hypot(mu2);
         let width = s2 / m.max(s1);
         if !(width > 0.0 && width.is_finite()) {
             return None;
         }
-        let spacing = |l: usize| std::f64::consts::TAU / f64::from(8u32 << l);
+        let central = mu1 == 0.0 && mu2 == 0.0;
+        let (towards, squeeze) = if central {
+            ((1.0, 0.0), 1.0)
+        } else {
+            // The mass spans about `σ_t/|μ|` in angle (σ_t its spread across
+            // μ); `s` = twice that gives the bump a width of order one in φ.
+            let (u1, u2) = (mu1 / m, mu2 / m);
+            let across = (u2 * s1).hypot(u1 * s2);
+            ((u1, u2), (SQUEEZE * across / m).min(1.0))
+        };
+        let spacing = |l: usize| {
+            if central {
+                std::f64::consts::TAU / f64::from(8u32 << l)
+            } else {
+                squeeze * std::f64::consts::TAU / f64::from(8u32 << l)
+            }
+        };
         let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
             axes: Axes::new(mu1, mu2, s1, s2),
-            central: mu1 == 0.0 && mu2 == 0.0,
+            central,
             start,
-            rays: Vec::with_capacity(4 << (start + 1)),
+            towards,
+            squeeze,
+            rays: Vec::with_capacity(8 << (start + 1)),
         })
     }
 
-    /// Rays up to `n` directions in `[0, π)`.
+    /// Rays up to `n` entries of the direction table.
     fn build(&mut self, n: usize) {
         let table = directions();
+        let (c0, s0) = self.towards;
+        let q = self.squeeze;
         for &(c, s) in &table[self.rays.len()..n.max(self.rays.len())] {
             let ray = if self.central {
                 let (a, _) = self.axes.ab(c, s);
@@ -199,11 +255,19 @@ impl Polar {
                     sa: a.sqrt(),
                     r0: 0.0,
                     k: self.axes.k,
-                    e0: 1.0,
+                    ke0: self.axes.k,
+                    kphi: 0.0,
                     c0: 0.5,
                 }
             } else {
-                self.axes.ray(c, s)
+                // The table's (cos, sin) of φ/2; θ − θ₀ = 2 atan(s tan(φ/2)),
+                // θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2)).
+                let (cc, ss) = (c * c, q * q * s * s);
+                let den = 1.0 / (cc + ss);
+                let (cd, sd) = ((cc - ss) * den, 2.0 * q * s * c * den);
+                self.axes
+                    .ray(c0 * cd - s0 * sd, s0 * cd + c0 * sd)
+                    .weighted(q * den)
             };
             self.rays.push(ray);
         }
@@ -215,7 +279,9 @@ impl Polar {
         let mut last: Option<[f64; 2]> = None;
         let mut done = 0;
         for l in 0..=MAX_LEVEL {
-            let n = 4 << l;
+            // Centred: `4·2^l` directions in [0, π) and their opposites;
+            // off the origin: `8·2^l` nodes φ over the full turn.
+            let n = if self.central { 4 << l } else { 8 << l };
             self.build(n);
             for ray in &self.rays[done..n] {
                 if self.central {
@@ -223,16 +289,15 @@ impl Polar {
                     sum += 2.0 * ray.k * (1.0 - e) * ray.inv_a;
                     dsum += 2.0 * ray.k * rho * e;
                 } else {
-                    for (r0, c0) in [(ray.r0, ray.c0), (-ray.r0, 1.0 - ray.c0)] {
-                        let [p, dp] = ray.along(rho, r0, c0);
-                        sum += p;
-                        dsum += dp;
-                    }
+                    let [p, dp] = ray.ahead(rho);
+                    sum += p;
+                    dsum += dp;
                 }
             }
             done = n;
-            // The trapezoidal rule over the full turn: 2n directions.
-            let now = [sum / (2 * n) as f64, dsum / (2 * n) as f64];
+            // The trapezoidal rule over the full turn.
+            let nodes = if self.central { 2 * n } else { n };
+            let now = [sum / nodes as f64, dsum / nodes as f64];
             if agree(last, now) {
                 return Some(now);
             }

@@ -242,11 +242,14 @@ pub fn propagate_factored(
     // O(rows·runs·q + rows·q²) and memory O(rows·(runs + q)), never a
     // Jacobian per reading (issue 15).
     let m = used_rows.len();
-    let mom: Vec<Vec<(f64, Complex64)>> = cov
+    // Moments of every reading, flat at `a * runs + k` (one allocation, not
+    // one per row: issue 15).
+    let mom: Vec<(f64, Complex64)> = cov
         .iter()
         .take(n)
-        .map(|row| row.iter().take(runs).map(moments).collect())
+        .flat_map(|row| row[..runs].iter().map(moments))
         .collect();
+    let row_moments = |a: usize| &mom[a * runs..(a + 1) * runs];
     let a_vec = DMatrix::from_fn(q, m, |j, i| -apinv[(j, i)] * row_weights[i]);
     let b_vec: Vec<Complex64> = (0..m).map(|i| -r[i] * row_weights[i]).collect();
     let xi = DMatrix::from_fn(q, runs, |j, k| g_omega[k][j]);
@@ -254,38 +257,26 @@ pub fn propagate_factored(
     let k_mat;
     let j_mat;
     {
-        let s1 = DMatrix::from_fn(m, 1, |i, _| {
-            Complex64::from(
-                (0..runs)
-                    .map(|k| mom[used_rows[i]][k].0 * lambda[k].norm_sqr())
-                    .sum::<f64>(),
-            )
-        });
-        let p1 = DMatrix::from_fn(m, 1, |i, _| {
-            (0..runs)
-                .map(|k| mom[used_rows[i]][k].1 * lambda[k] * lambda[k])
-                .sum::<Complex64>()
-        });
-        let s2: Vec<f64> = (0..runs)
-            .map(|k| {
-                (0..m)
-                    .map(|i| mom[used_rows[i]][k].0 * b_vec[i].norm_sqr())
-                    .sum()
-            })
-            .collect();
-        let p2: Vec<Complex64> = (0..runs)
-            .map(|k| {
-                (0..m)
-                    .map(|i| mom[used_rows[i]][k].1.conj() * b_vec[i] * b_vec[i])
-                    .sum()
-            })
-            .collect();
-        let p3 = DMatrix::from_fn(m, runs, |i, k| {
-            mom[used_rows[i]][k].1 * lambda[k] * b_vec[i].conj()
-        });
-        let s3 = DMatrix::from_fn(m, runs, |i, k| {
-            mom[used_rows[i]][k].0 * lambda[k] * b_vec[i]
-        });
+        // s1, p1 per used row, s2, p2 per run, p3, s3 per reading, in one
+        // pass over the readings (the same sums in the same order as one
+        // pass each).
+        let (mut s1, mut p1) = (vec![0.0; m], vec![zero; m]);
+        let (mut s2, mut p2) = (vec![0.0; runs], vec![zero; runs]);
+        let mut p3 = DMatrix::from_element(m, runs, zero);
+        let mut s3 = DMatrix::from_element(m, runs, zero);
+        for (i, &a) in used_rows.iter().enumerate() {
+            let bi = b_vec[i];
+            let bn = bi.norm_sqr();
+            for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
+                let l = lambda[k];
+                s1[i] += sk * l.norm_sqr();
+                p1[i] += pk * l * l;
+                s2[k] += sk * bn;
+                p2[k] += pk.conj() * bi * bi;
+                p3[(i, k)] = pk * l * bi.conj();
+                s3[(i, k)] = sk * l * bi;
+            }
+        }
         let xi_scaled = |d: &[f64]| {
             let mut x = xi.clone();
             for (k, mut col) in x.column_iter_mut().enumerate() {
@@ -296,26 +287,28 @@ pub fn propagate_factored(
         // a diag(s1) aᴴ + k3 + k3ᴴ as X + Xᴴ with X = a (diag(s1/2) aᴴ + p3 ξᴴ),
         // and the same for J with transposes: one q × rows × q product each
         // instead of three (issue 15). diag(s1) is real and diag(p1) enters
-        // a symmetric form, so halving it on both sides is exact.
-        let mut mk = cmul(&p3, &xi.adjoint());
-        let mut mj = cmul(&s3, &xi.transpose());
+        // a symmetric form, so halving it on both sides is exact. Both in
+        // one product `a [mk | mj]`.
+        let mk = cmul(&p3, &xi.adjoint());
+        let mj = cmul(&s3, &xi.transpose());
+        let mut mkj = DMatrix::from_element(m, 2 * q, zero);
         for i in 0..m {
-            let (half_s, half_p) = (s1[(i, 0)] * 0.5, p1[(i, 0)] * 0.5);
+            let (half_s, half_p) = (s1[i] * 0.5, p1[i] * 0.5);
             for j in 0..q {
                 let aij = a_vec[(j, i)];
-                mk[(i, j)] += half_s * aij.conj();
-                mj[(i, j)] += half_p * aij;
+                mkj[(i, j)] = mk[(i, j)] + half_s * aij.conj();
+                mkj[(i, q + j)] = mj[(i, j)] + half_p * aij;
             }
         }
+        let akj = cmul(&a_vec, &mkj);
+        let (ak, aj) = (akj.columns(0, q), akj.columns(q, q));
         let xs = xi_scaled(&s2);
-        let ak = cmul(&a_vec, &mk);
-        k_mat = &ak + ak.adjoint() + &xs * xs.adjoint();
+        k_mat = ak + ak.adjoint() + &xs * xs.adjoint();
         let mut xp = xi.clone();
         for (k, mut col) in xp.column_iter_mut().enumerate() {
             col *= p2[k];
         }
-        let aj = cmul(&a_vec, &mj);
-        j_mat = &aj + aj.transpose() + xp * xi.transpose();
+        j_mat = aj + aj.transpose() + xp * xi.transpose();
     }
     let correction_full = real_cov_full(&k_mat, &j_mat);
     let correction = (0..q)
@@ -329,65 +322,75 @@ pub fn propagate_factored(
     // dR̂_a = W̃_a dC + Σ_k λ_k δ_ak: the direct part (alone `residual`), the
     // part through C (w K wᴴ, w J wᵀ), and for a used row the cross terms of
     // its own readings, whose share of dC is (w·a_i) λ_k δ + (w·ξ_k) b_i δ̄.
-    let w_used = DMatrix::from_fn(n, q, |a, j| w[(a, used_planes[j])]);
-    let wk = cmul(&w_used, &k_mat);
-    let wj = cmul(&w_used, &j_mat);
-    let wxi = cmul(&w_used, &xi); // n × runs: w_a · ξ_k
+    // `W` itself when every plane is used (no copy).
+    let w_sub = (!used_planes.iter().copied().eq(0..planes))
+        .then(|| DMatrix::from_fn(n, q, |a, j| w[(a, used_planes[j])]));
+    let w_used = w_sub.as_ref().unwrap_or(w);
+    // [w K | w J | w ξ] in one product (n × (2q + runs)).
+    let mut kjx = DMatrix::from_element(q, 2 * q + runs, zero);
+    kjx.columns_mut(0, q).copy_from(&k_mat);
+    kjx.columns_mut(q, q).copy_from(&j_mat);
+    kjx.columns_mut(2 * q, runs).copy_from(&xi);
+    let wkjx = cmul(w_used, &kjx);
     let mut through_correction = Vec::with_capacity(n);
     let mut remaining_cross = Vec::with_capacity(n);
-    let (residual, prediction) = (0..n)
-        .map(|a| {
-            let (mut kd, mut jd) = (0.0, zero);
-            let (mut kx, mut jx) = (zero, zero);
+    let mut residual = Vec::with_capacity(n);
+    let mut prediction = Vec::with_capacity(n);
+    for a in 0..n {
+        let (mut kd, mut jd) = (0.0, zero);
+        let (mut kx, mut jx) = (zero, zero);
+        let own = position[a].map(|i| {
             // w_a · a_i, the row's own share (never a rows × rows product).
-            // (tr_dot: no transposed copy of the row per row, issue 15)
-            let wa = position[a].map(|i| w_used.row(a).tr_dot(&a_vec.column(i)));
-            for k in 0..runs {
-                let (s, p) = mom[a][k];
-                let l = lambda[k];
-                kd += s * l.norm_sqr();
-                jd += p * l * l;
-                if let (Some(i), Some(wa)) = (position[a], wa) {
-                    let u = wa * l;
-                    let v = wxi[(a, k)] * b_vec[i];
-                    kx += u * l.conj() * s + v * l.conj() * p.conj();
-                    jx += u * l * p + v * l * s;
-                }
+            (i, w_used.row(a).tr_dot(&a_vec.column(i)))
+        });
+        for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
+            let l = lambda[k];
+            kd += sk * l.norm_sqr();
+            jd += pk * l * l;
+            if let Some((i, wa)) = own {
+                let u = wa * l;
+                let v = wkjx[(a, 2 * q + k)] * b_vec[i];
+                kx += u * l.conj() * sk + v * l.conj() * pk.conj();
+                jx += u * l * pk + v * l * sk;
             }
-            let kt: Complex64 = (0..q).map(|j| wk[(a, j)] * w_used[(a, j)].conj()).sum();
-            let jt: Complex64 = (0..q).map(|j| wj[(a, j)] * w_used[(a, j)]).sum();
-            let through = real_cov(kt.re, jt);
-            // E[u ēₐ] = kx and E[u eₐ] = jx as a real cross-covariance
-            // (E[u₁e₁] = Re(kx+jx)/2, E[u₁e₂] = Im(jx−kx)/2, E[u₂e₁] =
-            // Im(jx+kx)/2, E[u₂e₂] = Re(kx−jx)/2); Cov(u, v) = Σ_u + Cov(u, eₐ).
-            let cross_e = Matrix2::new(
-                (kx.re + jx.re) / 2.0,
-                (jx.im - kx.im) / 2.0,
-                (jx.im + kx.im) / 2.0,
-                (kx.re - jx.re) / 2.0,
-            );
-            remaining_cross.push(through + cross_e);
-            through_correction.push(through);
-            let direct = real_cov(kd, jd);
-            let whole = real_cov(kt.re + kd + 2.0 * kx.re, jt + jd + 2.0 * jx);
-            (direct, whole)
-        })
-        .unzip();
+        }
+        let (mut kt, mut jt) = (zero, zero);
+        for j in 0..q {
+            let wa = w_used[(a, j)];
+            kt += wkjx[(a, j)] * wa.conj();
+            jt += wkjx[(a, q + j)] * wa;
+        }
+        let through = real_cov(kt.re, jt);
+        // E[u ēₐ] = kx and E[u eₐ] = jx as a real cross-covariance
+        // (E[u₁e₁] = Re(kx+jx)/2, E[u₁e₂] = Im(jx−kx)/2, E[u₂e₁] =
+        // Im(jx+kx)/2, E[u₂e₂] = Re(kx−jx)/2); Cov(u, v) = Σ_u + Cov(u, eₐ).
+        let cross_e = Matrix2::new(
+            (kx.re + jx.re) / 2.0,
+            (jx.im - kx.im) / 2.0,
+            (jx.im + kx.im) / 2.0,
+            (kx.re - jx.re) / 2.0,
+        );
+        remaining_cross.push(through + cross_e);
+        through_correction.push(through);
+        residual.push(real_cov(kd, jd));
+        prediction.push(real_cov(kt.re + kd + 2.0 * kx.re, jt + jd + 2.0 * jx));
+    }
 
     // Trial effects: dW_aj = Σ_k dY_a,k T⁺_kj − dY_a0 s_j, independent terms; a
-    // complex factor rotates a covariance without changing its trace.
+    // complex factor rotates a covariance without changing its trace. The
+    // variances of all (row, plane) pairs are one real product of the
+    // readings' traces (rows × runs) by `[|s_j|²; |T⁺_kj|²]` (runs × planes)
+    // (issue 15).
     let taus: Vec<f64> = (0..planes)
         .map(|j| (0..t.ncols()).map(|k| t[(j, k)].norm()).fold(0.0, f64::max))
         .collect();
-    // |T⁺_kj|², |s_j|² and the readings' traces once, not per (row, plane)
-    // pair (issue 15); the sums keep their order.
-    let tp2 = DMatrix::from_fn(runs - 1, planes, |k, j| tp[(k, j)].norm_sqr());
-    let traces = DMatrix::from_fn(runs, n, |k, a| cov[a][k].trace());
-    let effect_sd = DMatrix::from_fn(n, planes, |a, j| {
-        let (tr, t2) = (traces.column(a), tp2.column(j));
-        let var = (1..runs).map(|k| t2[k - 1] * tr[k]).sum::<f64>() + s[j].norm_sqr() * tr[0];
-        taus[j] * var.sqrt()
+    let gains = DMatrix::from_fn(runs, planes, |k, j| match k {
+        0 => s[j].norm_sqr(),
+        _ => tp[(k - 1, j)].norm_sqr(),
     });
+    let traces = DMatrix::from_fn(n, runs, |a, k| cov[a][k].trace());
+    let var = traces * gains;
+    let effect_sd = DMatrix::from_fn(n, planes, |a, j| taus[j] * var[(a, j)].sqrt());
     Propagation {
         correction,
         correction_full,

@@ -218,24 +218,28 @@ fn quantile<P: FnMut(f64) -> [f64; 2]>(
     let Some([mu1, mu2, s1, s2]) = principal(&mean, cov) else {
         return m;
     };
-    let mut inside = rule(mu1, mu2, s1, s2);
+    let inside = rule(mu1, mu2, s1, s2);
     // The quantile lies in [|μ|, |μ| + 2.448σ₁]: the disc of radius |μ| lies in
     // a half-plane through μ (probability ½), and the disc of radius
     // √5.991·σ₁ around μ holds the χ²₂ 95 % ellipse. Newton's method on
     // P(ρ) = 0.95 with P' from the same rule, kept inside the bracket by
-    // bisection; from a Gaussian first guess it takes 2 to 4 steps.
-    let (mut lo, mut hi) = (m, m + CHI2_2_95.sqrt() * s1);
-    let radial = if m > 0.0 {
-        let u = Vector2::new(mean.re, mean.im) / m;
-        (u.transpose() * cov * u)[0].max(0.0).sqrt()
-    } else {
-        0.0
-    };
-    let mut x = if m > CHI2_2_95.sqrt() * s1 {
-        m + 1.645 * radial
-    } else {
-        (m * m + 3.0 * cov.trace()).sqrt()
-    };
+    // bisection. The first guess matches `|R|² ≈ c χ²_ν` in mean
+    // `E = |μ|² + tr Σ` and variance `V = 2 tr Σ² + 4 μᵀΣμ` (Patnaik 1949)
+    // and takes that quantile by Wilson and Hilferty's cube root (1931):
+    // a third fewer steps than `|μ| + 1.645 σ_radial` (2 to 3; issue 15,
+    // session 6).
+    let (lo, hi) = (m, m + CHI2_2_95.sqrt() * s1);
+    let mv = Vector2::new(mean.re, mean.im);
+    let e = m * m + cov.trace();
+    let v = 2.0 * (cov * cov).trace() + 4.0 * (mv.transpose() * cov * mv)[0];
+    let nu = 2.0 * e * e / v;
+    let w = 2.0 / (9.0 * nu);
+    let x = (v / (2.0 * e) * nu * (1.0 - w + 1.644_853_626_951_472_2 * w.sqrt()).powi(3)).sqrt();
+    newton(inside, x, lo, hi)
+}
+
+/// Safeguarded Newton on `P(ρ) = 0.95` from `x` within `[lo, hi]`.
+fn newton(mut inside: impl FnMut(f64) -> [f64; 2], mut x: f64, mut lo: f64, mut hi: f64) -> f64 {
     for _ in 0..60 {
         if !(x > lo && x < hi) {
             x = 0.5 * (lo + hi);

@@ -19,23 +19,18 @@
 //! doublings, or the mass is too narrow in angle for the coarse rule to see
 //! it, the caller falls back to the adaptive quadrature.
 //!
-//! Off the origin the integrand is a bump around the mean's direction θ₀,
-//! about `σ_t/|μ|` wide (`σ_t` the spread across μ), and equally spaced
-//! directions waste most of their rays where there is no mass (a row 2–8σ
-//! out needed 256 to 512 of them). The rule is therefore taken in `φ` with
-//! `tan((θ − θ₀)/2) = s tan(φ/2)`, `s = min(1, 2σ_t/|μ|)`: a map of the
-//! circle onto itself, analytic and periodic, so the trapezoidal rule in φ
-//! still converges geometrically, with the nodes packed `s` times closer
-//! near θ₀ and the bump about two units wide in φ (the weight is
-//! `θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2))`). Rows 2–13σ out converge at 64
-//! nodes (issue 15, session 6). The guard against a coarse rule stepping
-//! over a thin mass compares the spacing at θ₀.
+//! Off the origin the integrand is a bump about `σ_t/|μ|` wide around the
+//! mean's direction θ₀ (`σ_t` the spread across μ), where equally spaced
+//! directions waste their rays (rows 2–8σ out needed 256–512). So the rule
+//! runs in φ with `tan((θ − θ₀)/2) = s tan(φ/2)`, `s = min(1, 2σ_t/|μ|)`,
+//! weight `θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2))`: an analytic periodic map
+//! of the circle, so convergence stays geometric, with the nodes `s` times
+//! closer near θ₀ (rows 2–13σ out: 64 nodes; issue 15, session 6).
 //!
-//! Everything that does not depend on ρ (per direction `A`, `r₀`, `e^{−E/2}`,
-//! `Φ(−√A r₀)`; `e^{−E/2} e^{−½A r₀²} = e^{−C/2}` is the same for all) is
-//! computed once per row and reused by every Newton step. Per step and
-//! direction: one exponential for `μ = 0`, an exponential and a `Φ`
-//! otherwise.
+//! What does not depend on ρ (per direction `A`, `r₀`, `e^{−E/2}`,
+//! `Φ(−√A r₀)`; `e^{−E/2} e^{−½A r₀²} = e^{−C/2}` for all) is computed once
+//! per row. Per Newton step and direction: one exponential for `μ = 0`, an
+//! exponential and a `Φ` otherwise.
 
 use std::sync::OnceLock;
 
@@ -61,11 +56,10 @@ pub(super) fn agree(prev: Option<[f64; 2]>, now: [f64; 2]) -> bool {
     })
 }
 
-/// Cos and sin of the directions in `[0, π)`, coarse levels first: level 0 is
-/// `kπ/4` (k < 4), level `l ≥ 1` adds the odd multiples of `π/(4·2^l)`; the
-/// first `4·2^l` entries are the centred rule's level `l`, and, as the
-/// half-angles `φ/2` of the nodes `φ = 2πj/(8·2^l)`, the first `8·2^l` are
-/// the off-centre rule's.
+/// Cos and sin of the directions in `[0, π)`, coarse levels first: `kπ/4`
+/// (k < 4), then level `l ≥ 1`'s odd multiples of `π/(4·2^l)`. The first
+/// `4·2^l` are the centred rule's level `l`; the first `8·2^l`, as `φ/2`, the
+/// off-centre rule's.
 fn directions() -> &'static [(f64, f64); HALF] {
     static TABLE: OnceLock<[(f64, f64); HALF]> = OnceLock::new();
     TABLE.get_or_init(|| {
@@ -75,9 +69,18 @@ fn directions() -> &'static [(f64, f64); HALF] {
             // (multiple of `step`, step): kπ/4, then the odd multiples of π/(4·2^l).
             let step = std::f64::consts::PI / f64::from(4u32 << l);
             let count: u32 = if l == 0 { 4 } else { 4 << (l - 1) };
+            // Rotations, exact every 16th entry so that rounding cannot build
+            // up (a `sin_cos` per entry cost 80 k instructions once).
+            let turn = if l == 0 { step } else { 2.0 * step };
+            let (ds, dc) = turn.sin_cos();
+            let (mut c, mut s) = (1.0, 0.0);
             for k in 0..count {
                 let j = if l == 0 { k } else { 2 * k + 1 };
-                let (s, c) = (step * f64::from(j)).sin_cos();
+                if k % 16 == 0 {
+                    (s, c) = (step * f64::from(j)).sin_cos();
+                } else {
+                    (c, s) = (c * dc - s * ds, s * dc + c * ds);
+                }
                 t[n] = (c, s);
                 n += 1;
             }
@@ -97,8 +100,7 @@ pub(super) struct Ray {
     r0: f64,
     /// `k = e^{−E/2}/(σ₁σ₂)` (times the node's weight, where there is one).
     k: f64,
-    /// `k e^{−½A r₀²}`, which is `e^{−C/2}/(σ₁σ₂)` for every direction
-    /// (`E + A r₀² = C`): no exponential per ray.
+    /// `k e^{−½A r₀²} = e^{−C/2}/(σ₁σ₂)` (`E + A r₀² = C`), times the weight.
     ke0: f64,
     /// `k r₀ √(2π/A)`.
     kphi: f64,
@@ -191,10 +193,8 @@ pub(super) struct Polar {
     /// squeeze `s` of the map that gathers the nodes there (module doc).
     towards: (f64, f64),
     squeeze: f64,
-    /// Filled lazily up to the finest level used (a zeroed array of all
-    /// [`HALF`] cost more than the whole rule for a typical row). Centred:
-    /// one ray per direction in `[0, π)`; off the origin: one per node of the
-    /// mapped rule, its weight `θ'(φ)` folded into `k`.
+    /// Filled lazily up to the finest level used. Centred: one ray per
+    /// direction in `[0, π)`; otherwise one per node, weight `θ'(φ)` in `k`.
     rays: Vec<Ray>,
 }
 
@@ -204,32 +204,26 @@ impl Polar {
     /// quadrature is used).
     pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Option<Self> {
         // Angular width of the mass seen from the origin: at least σ₂ over
-        // the larger of |μ| and σ₁. Start where the spacing (off the origin:
-        // at the mean's direction, where the map packs the nodes closest) is
-        // at most twice that, so that no coarse rule can step over all of
-        // the mass and agree with the next by both missing it.
+        // the larger of |μ| and σ₁. Start where the spacing (at θ₀, where
+        // the map packs the nodes) is at most twice that, so that no coarse
+        // rule can step over the mass and agree with the next by both missing it.
         let m = mu1.hypot(mu2);
         let width = s2 / m.max(s1);
         if !(width > 0.0 && width.is_finite()) {
             return None;
         }
-        let central = mu1 == 0.0 && mu2 == 0.0;
+        // A mean within 10⁻⁶σ₂ of the origin (exact data leave 10⁻¹² of
+        // rounding) moves P by under 10⁻¹²: the centred rule, half the cost.
+        let central = m <= 1e-6 * s2;
         let (towards, squeeze) = if central {
             ((1.0, 0.0), 1.0)
         } else {
-            // The mass spans about `σ_t/|μ|` in angle (σ_t its spread across
-            // μ); `s` = twice that gives the bump a width of order one in φ.
+            // The mass spans about `σ_t/|μ|` in angle (module doc).
             let (u1, u2) = (mu1 / m, mu2 / m);
             let across = (u2 * s1).hypot(u1 * s2);
             ((u1, u2), (SQUEEZE * across / m).min(1.0))
         };
-        let spacing = |l: usize| {
-            if central {
-                std::f64::consts::TAU / f64::from(8u32 << l)
-            } else {
-                squeeze * std::f64::consts::TAU / f64::from(8u32 << l)
-            }
-        };
+        let spacing = |l: usize| squeeze * std::f64::consts::TAU / f64::from(8u32 << l);
         let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
             axes: Axes::new(mu1, mu2, s1, s2),

@@ -49,7 +49,9 @@ pub use apply::{fill, noise_options, reading_covariances, Noise, SNR_THRESHOLD};
 pub use bias::{bias, debiased};
 pub use propagate::{propagate, Propagation};
 pub use region::{amplitude_95, correction_uncertainty, normal_cdf, CHI2_2_95};
-pub use remaining::{remaining_amplitude_95, residual_shrinkage};
+pub use remaining::{
+    calibrated_scale, remaining_amplitude_95, residual_shrinkage, weight_sensitivity, Pooled,
+};
 pub use trust::{kappa, second_order, warn_untrusted, KAPPA_LIMIT};
 
 /// Default 1X amplitude repeatability, percent of the reading (issue 6).

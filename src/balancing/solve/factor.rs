@@ -13,6 +13,8 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
+use super::householder::Householder;
+
 /// `A = Q U Σ Vᴴ` with `Q U` of orthonormal columns (only the `k = min(m, q)`
 /// columns that can carry a nonzero singular value).
 #[derive(Debug, Clone)]
@@ -114,8 +116,9 @@ impl ThinSvd {
 /// come from the small `R D`.
 #[derive(Debug, Clone)]
 pub struct Factored {
-    /// `Q` of `A = Q R` (`m × q`) when `A` has more rows than columns; else `None`, and `r` is `A`.
-    q: Option<DMatrix<Complex64>>,
+    /// `Q` of `A = Q R`, as its reflectors, when `A` has more rows than
+    /// columns; else `None`, and `r` is `A`.
+    q: Option<Householder>,
     /// `R` (`q × q`, upper triangular), or `A` itself.
     r: DMatrix<Complex64>,
     /// The SVD of `r`: its `u` is `U_R`, the left vectors of `A` are `Q U_R`.
@@ -130,8 +133,9 @@ impl Factored {
     /// One QR (when tall) and one SVD of the small factor.
     pub fn of(a: &DMatrix<Complex64>) -> Factored {
         let (q, r) = if a.nrows() > a.ncols() {
-            let qr = a.clone().qr();
-            (Some(qr.q()), qr.r())
+            let qr = Householder::of(a);
+            let r = qr.r().clone();
+            (Some(qr), r)
         } else {
             (None, a.clone())
         };
@@ -163,7 +167,7 @@ impl Factored {
     /// `Qᴴ c`: `c` in the coordinates of `R` (the identity when not tall).
     fn project(&self, c: &DVector<Complex64>) -> DVector<Complex64> {
         match &self.q {
-            Some(q) => q.ad_mul(c),
+            Some(q) => q.adjoint_apply(c),
             None => c.clone(),
         }
     }
@@ -177,7 +181,7 @@ impl Factored {
     pub fn pinv_and_gram_inv(&self, tol: f64) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
         let (r_pinv, gram_inv) = self.svd.pinv_and_gram_inv(tol);
         match &self.q {
-            Some(q) => (cmul(q, &r_pinv.adjoint()).adjoint(), gram_inv),
+            Some(q) => (q.apply(&r_pinv.adjoint()).adjoint(), gram_inv),
             None => (r_pinv, gram_inv),
         }
     }

@@ -4,6 +4,7 @@
 
 pub mod diagnostics;
 pub mod factor;
+pub mod householder;
 pub mod influence;
 pub mod practical;
 pub mod report;

@@ -156,12 +156,29 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     }
     // The remaining vibration's bound (issue 12, `remaining`), its shrinkage
     // from the rows of the fit.
+    let dof = sel.rows.len().saturating_sub(fit.planes.len());
     let shrink = super::residual_shrinkage(
         sel.rows
             .iter()
             .map(|&a| (fit.residual[a], &prop.prediction[a])),
-        sel.rows.len().saturating_sub(fit.planes.len()),
+        dof,
     );
+    // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
+    let ks: Vec<f64> = sel
+        .rows
+        .iter()
+        .filter_map(|&a| {
+            super::remaining::weight_sensitivity(
+                &prop.prediction[a],
+                &prop.through_correction[a],
+                &prop.remaining_cross[a],
+            )
+        })
+        .collect();
+    let pooled = super::remaining::Pooled {
+        shrink,
+        scale: super::remaining::calibrated_scale(&ks, dof, shrink),
+    };
     for (a, (res, &r)) in solution
         .predicted_residual
         .iter_mut()
@@ -174,7 +191,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             &prop.prediction[a],
             through,
             cross,
-            shrink,
+            pooled,
         ));
     }
 

@@ -118,8 +118,8 @@ impl<'a> Program<'a> {
         }
     }
 
-    /// `Σ Gᵢᵀ Sᵢ Gᵢ` for the symmetric 3 × 3 `Sᵢ = Wᵢ⁻²`, its lower triangle
-    /// row by row into `nm` (`dim²` entries), then factored in place.
+    /// `Σ Gᵢᵀ Sᵢ Gᵢ` for the symmetric 3 × 3 `Sᵢ = Wᵢ⁻²`, (at least) its
+    /// lower triangle row by row into `nm` (`dim²` entries), then factored in place.
     /// `false` when rounding has left it not positive definite.
     pub(super) fn normal(&self, sq: &[[V3; 3]], nm: &mut [f64]) -> bool {
         let (n, n2, d) = (self.n, 2 * self.n, self.dim());
@@ -134,7 +134,11 @@ impl<'a> Program<'a> {
                 if !wide {
                     let u = s[1][1] * p[i] + s[1][2] * q[i];
                     let w = s[2][1] * p[i] + s[2][2] * q[i];
-                    let out = &mut nm[d * i..d * i + i + 1];
+                    // The whole row, not its lower part: a fixed length the
+                    // compiler vectorises, where the triangle's short varying
+                    // loops cost ~25 instructions an entry (the upper half is
+                    // never read).
+                    let out = &mut nm[d * i..d * i + n2];
                     for ((o, pj), qj) in out.iter_mut().zip(p).zip(q) {
                         *o += u * pj + w * qj;
                     }

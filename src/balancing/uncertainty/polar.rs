@@ -25,7 +25,9 @@
 //! runs in φ with `tan((θ − θ₀)/2) = s tan(φ/2)`, `s = min(1, 2σ_t/|μ|)`,
 //! weight `θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2))`: an analytic periodic map
 //! of the circle, so convergence stays geometric, with the nodes `s` times
-//! closer near θ₀ (rows 2–13σ out: 64 nodes; issue 15, session 6).
+//! closer near θ₀ (rows 2–13σ out: 64 nodes; issue 15, session 6). Where
+//! `s = 1` (the mean within `2σ_t` of the origin) the rule is unmapped and a
+//! direction and its opposite share their ray (`A`, `E`, `C`).
 //!
 //! What does not depend on ρ (per direction `A`, `r₀`, `e^{−E/2}`,
 //! `Φ(−√A r₀)`; `e^{−E/2} e^{−½A r₀²} = e^{−C/2}` for all) is computed once
@@ -143,6 +145,16 @@ impl Ray {
         let along = (self.ke0 - self.k * e) * self.inv_a + self.kphi * (normal_cdf(t) - self.c0);
         [along, self.k * rho * e]
     }
+
+    /// [`Ray::ahead`] for the opposite direction, which shares `A`, `E` and
+    /// `C` (`r₀` and `k r₀ √(2π/A)` change sign, `Φ(−√A r₀)` becomes `1 −` it).
+    fn behind(&self, rho: f64) -> [f64; 2] {
+        let t = self.sa * (rho + self.r0);
+        let e = (-0.5 * t * t).exp();
+        let along =
+            (self.ke0 - self.k * e) * self.inv_a - self.kphi * (normal_cdf(t) - (1.0 - self.c0));
+        [along, self.k * rho * e]
+    }
 }
 
 /// `N((μ₁, μ₂), diag(σ₁², σ₂²))` as the rays need it: `μ`, `1/σ²`,
@@ -188,13 +200,17 @@ impl Axes {
 pub(super) struct Polar {
     axes: Axes,
     central: bool,
+    /// Off the origin but unmapped (`s = 1`): rays in `[0, π)`, each also
+    /// summed for its opposite direction ([`Ray::behind`]), which halves the
+    /// per-ray work of rows near the origin.
+    paired: bool,
     start: usize,
     /// Off the origin: `(cos θ₀, sin θ₀)` of the mean's direction and the
     /// squeeze `s` of the map that gathers the nodes there (module doc).
     towards: (f64, f64),
     squeeze: f64,
-    /// Filled lazily up to the finest level used. Centred: one ray per
-    /// direction in `[0, π)`; otherwise one per node, weight `θ'(φ)` in `k`.
+    /// Filled lazily up to the finest level used. Centred or paired: one ray
+    /// per direction in `[0, π)`; mapped: one per node, weight `θ'(φ)` in `k`.
     rays: Vec<Ray>,
 }
 
@@ -223,11 +239,13 @@ impl Polar {
             let across = (u2 * s1).hypot(u1 * s2);
             ((u1, u2), (SQUEEZE * across / m).min(1.0))
         };
+        let paired = !central && squeeze >= 1.0;
         let spacing = |l: usize| squeeze * std::f64::consts::TAU / f64::from(8u32 << l);
         let start = (0..MAX_LEVEL).find(|&l| spacing(l) <= 2.0 * width)?;
         Some(Self {
             axes: Axes::new(mu1, mu2, s1, s2),
             central,
+            paired,
             start,
             towards,
             squeeze,
@@ -253,6 +271,8 @@ impl Polar {
                     kphi: 0.0,
                     c0: 0.5,
                 }
+            } else if self.paired {
+                self.axes.ray(c, s)
             } else {
                 // The table's (cos, sin) of φ/2; θ − θ₀ = 2 atan(s tan(φ/2)),
                 // θ'(φ) = s/(cos²(φ/2) + s² sin²(φ/2)).
@@ -273,9 +293,10 @@ impl Polar {
         let mut last: Option<[f64; 2]> = None;
         let mut done = 0;
         for l in 0..=MAX_LEVEL {
-            // Centred: `4·2^l` directions in [0, π) and their opposites;
-            // off the origin: `8·2^l` nodes φ over the full turn.
-            let n = if self.central { 4 << l } else { 8 << l };
+            // Centred or paired: `4·2^l` directions in [0, π) and their
+            // opposites; mapped: `8·2^l` nodes φ over the full turn.
+            let half_turn = self.central || self.paired;
+            let n = if half_turn { 4 << l } else { 8 << l };
             self.build(n);
             for ray in &self.rays[done..n] {
                 if self.central {
@@ -286,11 +307,16 @@ impl Polar {
                     let [p, dp] = ray.ahead(rho);
                     sum += p;
                     dsum += dp;
+                    if self.paired {
+                        let [p, dp] = ray.behind(rho);
+                        sum += p;
+                        dsum += dp;
+                    }
                 }
             }
             done = n;
             // The trapezoidal rule over the full turn.
-            let nodes = if self.central { 2 * n } else { n };
+            let nodes = if half_turn { 2 * n } else { n };
             let now = [sum / nodes as f64, dsum / nodes as f64];
             if agree(last, now) {
                 return Some(now);

@@ -140,19 +140,20 @@ impl Ray {
 
     /// `k ·` the integral along the ray from 0 to ρ, and `k ·` its derivative in ρ.
     pub(super) fn ahead(&self, rho: f64) -> [f64; 2] {
-        let t = self.sa * (rho - self.r0);
-        let e = (-0.5 * t * t).exp();
-        let along = (self.ke0 - self.k * e) * self.inv_a + self.kphi * (normal_cdf(t) - self.c0);
-        [along, self.k * rho * e]
+        self.along(rho, self.r0, self.kphi, self.c0)
     }
 
     /// [`Ray::ahead`] for the opposite direction, which shares `A`, `E` and
     /// `C` (`r₀` and `k r₀ √(2π/A)` change sign, `Φ(−√A r₀)` becomes `1 −` it).
     fn behind(&self, rho: f64) -> [f64; 2] {
-        let t = self.sa * (rho + self.r0);
+        self.along(rho, -self.r0, -self.kphi, 1.0 - self.c0)
+    }
+
+    /// The ray's two integrals for the given `r₀`, `k r₀ √(2π/A)` and `Φ(−√A r₀)`.
+    fn along(&self, rho: f64, r0: f64, kphi: f64, c0: f64) -> [f64; 2] {
+        let t = self.sa * (rho - r0);
         let e = (-0.5 * t * t).exp();
-        let along =
-            (self.ke0 - self.k * e) * self.inv_a - self.kphi * (normal_cdf(t) - (1.0 - self.c0));
+        let along = (self.ke0 - self.k * e) * self.inv_a + kphi * (normal_cdf(t) - c0);
         [along, self.k * rho * e]
     }
 }

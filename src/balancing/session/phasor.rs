@@ -25,7 +25,17 @@ pub fn modulus(z: Complex64) -> f64 {
 
 /// Degrees in `[0, 360)`.
 pub fn wrap_deg(deg: f64) -> f64 {
-    let w = deg.rem_euclid(360.0);
+    // Within one turn `rem_euclid` (an `fmod`, exact) is `deg` or `deg + 360`:
+    // the same bits without the call, on every angle a solve reports (issue 15).
+    let w = if deg.abs() < 360.0 {
+        if deg < 0.0 {
+            deg + 360.0
+        } else {
+            deg
+        }
+    } else {
+        deg.rem_euclid(360.0)
+    };
     // rem_euclid can return 360.0 for tiny negative inputs
     if w >= 360.0 {
         0.0

@@ -34,33 +34,6 @@ pub const GRADES: [&str; 11] = [
 /// Position of each id in its list.
 type IdIndex<'s> = HashMap<&'s str, usize>;
 
-/// The pairing map's hasher (issue 15): its keys are (speed point, sensor)
-/// index pairs, bounded by the limits and never chosen by a client, so the
-/// multiplicative mix rustc uses (Fx) is safe here and a fraction of the cost
-/// of SipHash, which was a tenth of a large solve. Ids stay on SipHash.
-#[derive(Default, Clone, Copy)]
-struct PairHasher(u64);
-
-impl std::hash::Hasher for PairHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-    fn write_u64(&mut self, n: u64) {
-        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-    fn write_usize(&mut self, n: usize) {
-        self.write_u64(n as u64);
-    }
-}
-
-/// (speed point, sensor) → index of the reading in one run.
-type Pairs = HashMap<(usize, usize), usize, std::hash::BuildHasherDefault<PairHasher>>;
-
 /// One (speed point, sensor) pair measured in the reference run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
@@ -449,10 +422,17 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     // is rejected, so a speed 1 % from another sensor's is never paired with a
     // reading 2 % away.
     let mut span: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[p.len() - 1])).collect();
-    let mut paired: Vec<Pairs> = Vec::with_capacity(runs.len());
-    for &i in &runs {
-        let mut map =
-            Pairs::with_capacity_and_hasher(session.runs[i].readings.len(), Default::default());
+    // (point, sensor) cells, dense: at most `speed_points × sensors` of them
+    // (the limits), and an index is cheaper than hashing the pair (issue 15).
+    // `seen[cell]` is the last run (its position in `runs`, plus 1) that had
+    // a reading there, and that reading: a repeat within a run is a duplicate.
+    let nsens = session.sensors.len();
+    let mut seen: Vec<(u32, u32)> = vec![(0, 0); points.len() * nsens];
+    // Per run (in `runs` order), the cell of each reading.
+    let mut cells: Vec<Vec<u32>> = Vec::with_capacity(runs.len());
+    for (k, &i) in runs.iter().enumerate() {
+        let stamp = k as u32 + 1;
+        let mut of = Vec::with_capacity(session.runs[i].readings.len());
         // The point of the previous reading's speed: the sensors of one speed
         // usually follow each other, and the search is a function of the speed.
         let mut last: Option<(f64, usize)> = None;
@@ -471,57 +451,70 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
                 return Err(InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("{} rpm would put readings from {lo} to {hi} rpm, more than 1 % apart, in one speed point: readings are paired only when all the speeds of a point lie within 1 % of each other", r.speed_rpm)));
             }
             span[point] = (lo, hi);
-            let sensor = sensor_of[i][j];
-            if let Some(k) = map.insert((point, sensor), j) {
+            let cell = point * nsens + sensor_of[i][j];
+            let (run, prior) = seen[cell];
+            if run == stamp {
                 return Err(InputError::invalid(
                     "duplicate_reading",
                     f(),
-                    format!("run '{}' already has a reading of sensor '{}' at this speed (readings[{k}]); put repeated readings in `samples`", session.runs[i].id, r.sensor),
+                    format!("run '{}' already has a reading of sensor '{}' at this speed (readings[{prior}]); put repeated readings in `samples`", session.runs[i].id, r.sensor),
                 ));
             }
+            seen[cell] = (stamp, j as u32);
+            of.push(cell as u32);
         }
-        paired.push(map);
+        cells.push(of);
     }
 
-    let mut keys: Vec<(usize, usize)> = paired[0].keys().copied().collect();
+    // Rows: the reference run's cells in (point, sensor) order; `row_of[cell]`
+    // is the row's index plus 1 (0: the reference has no reading there).
+    let mut keys: Vec<(u32, usize)> = cells[0].iter().enumerate().map(|(j, &c)| (c, j)).collect();
     keys.sort_unstable();
+    let mut row_of = vec![0u32; points.len() * nsens];
     let mut rows = Vec::with_capacity(keys.len());
-    for (point, sensor) in keys {
-        let mut readings = Vec::with_capacity(runs.len());
-        for (k, &i) in runs.iter().enumerate() {
-            match paired[k].get(&(point, sensor)) {
-                Some(&j) => readings.push(j),
-                None => {
-                    let speed = ref_run.readings[paired[0][&(point, sensor)]].speed_rpm;
-                    return Err(InputError::invalid(
-                        "missing_reading",
-                        format!("runs[{i}].readings"),
-                        format!("run '{}' has no reading of sensor '{}' at {speed} rpm, which the reference run has", session.runs[i].id, session.sensors[sensor].id),
-                    ));
-                }
-            }
-        }
-        // A trial reading of a sensor/speed the reference lacks cannot be paired either.
-        let speed_rpm = ref_run.readings[readings[0]].speed_rpm;
+    for (a, &(cell, j)) in keys.iter().enumerate() {
+        row_of[cell as usize] = a as u32 + 1;
+        let mut readings = vec![usize::MAX; runs.len()];
+        readings[0] = j;
         rows.push(Row {
-            point,
-            sensor,
-            speed_rpm,
+            point: cell as usize / nsens,
+            sensor: cell as usize % nsens,
+            speed_rpm: ref_run.readings[j].speed_rpm,
             readings,
         });
     }
-    for (k, &i) in runs.iter().enumerate().skip(1) {
-        let mut used = vec![false; session.runs[i].readings.len()];
-        for r in &rows {
-            used[r.readings[k]] = true;
+    // A trial reading of a cell the reference lacks cannot be paired; it is
+    // reported after any reading a row misses, as before.
+    let mut unpaired: Option<(usize, usize)> = None;
+    for (k, of) in cells.iter().enumerate().skip(1) {
+        for (j, &cell) in of.iter().enumerate() {
+            match row_of[cell as usize] {
+                0 => {
+                    unpaired.get_or_insert((runs[k], j));
+                }
+                a => rows[a as usize - 1].readings[k] = j,
+            }
         }
-        if let Some(j) = used.iter().position(|&u| !u) {
+    }
+    for row in &rows {
+        if let Some(k) = row.readings.iter().position(|&j| j == usize::MAX) {
+            let i = runs[k];
             return Err(InputError::invalid(
-                "unpaired_reading",
-                format!("runs[{i}].readings[{j}]"),
-                "the reference run has no reading of this sensor at this speed to pair this one with",
+                "missing_reading",
+                format!("runs[{i}].readings"),
+                format!(
+                    "run '{}' has no reading of sensor '{}' at {} rpm, which the reference run has",
+                    session.runs[i].id, session.sensors[row.sensor].id, row.speed_rpm
+                ),
             ));
         }
+    }
+    if let Some((i, j)) = unpaired {
+        return Err(InputError::invalid(
+            "unpaired_reading",
+            format!("runs[{i}].readings[{j}]"),
+            "the reference run has no reading of this sensor at this speed to pair this one with",
+        ));
     }
 
     let y = DMatrix::from_fn(rows.len(), runs.len(), |a, k| {

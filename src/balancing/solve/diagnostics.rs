@@ -109,17 +109,18 @@ pub fn condition_number(a: &DMatrix<Complex64>) -> f64 {
 
 /// Largest change a plane's trial weight made at any of `rows`, relative to the
 /// reference amplitude there: `max_a |W_aj|·t_j / |Y0_a|`, with `t_j` the
-/// largest trial mass used in plane `j`. Rows with zero reference amplitude are skipped.
+/// largest trial mass used in plane `j`. Rows with zero reference amplitude are
+/// skipped. `y0_abs[a]` is `|Y0_a|`, computed once for every plane (issue 15).
 pub fn trial_effect_ratio(
     w: &DMatrix<Complex64>,
-    y0: &DVector<Complex64>,
+    y0_abs: &[f64],
     t: &DMatrix<Complex64>,
     j: usize,
     rows: &[usize],
 ) -> f64 {
     let trial = t.row(j).iter().map(|x| x.norm()).fold(0.0, f64::max);
     rows.iter()
-        .map(|&a| (a, modulus(y0[a])))
+        .map(|&a| (a, y0_abs[a]))
         .filter(|&(_, y)| y > 0.0)
         .map(|(a, y)| modulus(w[(a, j)]) * trial / y)
         .fold(0.0, f64::max)

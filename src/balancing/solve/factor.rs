@@ -81,6 +81,22 @@ impl ThinSvd {
         x
     }
 
+    /// `(AᴴA)⁺` (`q × q`) with singular values at or below `tol` left out:
+    /// `V Σ⁺² Vᴴ`, without `A⁺`.
+    pub fn gram_inv(&self, tol: f64) -> DMatrix<Complex64> {
+        let q = self.v_t.ncols();
+        let kept: Vec<(usize, f64)> = self.kept(tol).collect();
+        if kept.is_empty() {
+            return DMatrix::zeros(q, q);
+        }
+        let v_s2 = DMatrix::from_fn(q, kept.len(), |j, c| {
+            let (i, s) = kept[c];
+            self.v_t[(i, j)].conj() * (1.0 / s).powi(2)
+        });
+        let v = DMatrix::from_fn(q, kept.len(), |j, c| self.v_t[(kept[c].0, j)].conj());
+        v_s2 * v.adjoint()
+    }
+
     /// `(A⁺, (AᴴA)⁺)`, `q × m` and `q × q`, with singular values at or below
     /// `tol` left out: `V Σ⁺ Uᴴ` and `V Σ⁺² Vᴴ`, one product each.
     pub fn pinv_and_gram_inv(&self, tol: f64) -> (DMatrix<Complex64>, DMatrix<Complex64>) {
@@ -184,6 +200,11 @@ impl Factored {
             Some(q) => (q.apply(&r_pinv.adjoint()).adjoint(), gram_inv),
             None => (r_pinv, gram_inv),
         }
+    }
+
+    /// `(AᴴA)⁺ = (RᴴR)⁺` as [`ThinSvd::gram_inv`].
+    pub fn gram_inv(&self, tol: f64) -> DMatrix<Complex64> {
+        self.svd.gram_inv(tol)
     }
 
     /// `R` (or `A` when not tall): `AᴴA = RᴴR` in `q` rows.

@@ -69,14 +69,20 @@ fn corrections(fit: &Fit, warnings: &mut Vec<Warning>) -> Vec<Correction> {
 
 fn diagnostics(fit: &Fit, warnings: &mut Vec<Warning>) -> Vec<PlaneDiagnostics> {
     let session = fit.checked.session;
-    let y0 = fit.checked.y.column(0).clone_owned();
+    let y0_abs: Vec<f64> = fit
+        .checked
+        .y
+        .column(0)
+        .iter()
+        .map(|&y| modulus(y))
+        .collect();
     fit.selection
         .planes
         .iter()
         .zip(&fit.factors)
         .map(|(&j, &factor)| {
             let id = &session.planes[j].id;
-            let ratio = trial_effect_ratio(&fit.w, &y0, &fit.checked.t, j, &fit.selection.rows);
+            let ratio = trial_effect_ratio(&fit.w, &y0_abs, &fit.checked.t, j, &fit.selection.rows);
             let dropped = fit.dropped.contains(&j);
             if ratio < TRIAL_EFFECT_THRESHOLD {
                 let more = if ratio > 0.0 { format!(" (about {:.1} times the mass)", TRIAL_EFFECT_THRESHOLD / ratio) } else { String::new() };

@@ -120,7 +120,7 @@ pub fn solve_checked<'a>(
     let selection = select(&checked, options)?;
     let noise = uncertainty::noise_options(options)?;
 
-    let (a_all, _) = weighted_problem(&checked, &w, &selection, &selection.planes);
+    let (a_all, b_all) = weighted_problem(&checked, &w, &selection, &selection.planes);
     // One QR of `A` for the solve, the report and the uncertainty (issue 15).
     // The significance factors too: Gram–Schmidt of `A`'s unit columns sees
     // only their inner products, which `A = Q R` keeps (`Q` has orthonormal
@@ -163,11 +163,13 @@ pub fn solve_checked<'a>(
         ));
     }
 
-    let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
-    let factor = if planes.len() == selection.planes.len() {
-        factor_all
+    // Every plane kept (no plane dropped): the same `A` and factorisation.
+    let (a, b, factor) = if planes.len() == selection.planes.len() {
+        (a_all, b_all, factor_all)
     } else {
-        Factored::of(&a)
+        let (a, b) = weighted_problem(&checked, &w, &selection, &planes);
+        let factor = Factored::of(&a);
+        (a, b, factor)
     };
     let (c, warnings) = correction(&a, &b, &factor, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);

@@ -201,7 +201,7 @@ pub fn propagate_factored(
         }
     };
     let tol = RANK_TOLERANCE * factor.max();
-    let (apinv, gram_inv) = factor.pinv_and_gram_inv(tol);
+    let gram_inv = factor.gram_inv(tol);
     let sv = factor.singular_values();
     let full_rank = sv.len() == q && sv.iter().all(|&s| s > tol);
     let gram_inv_diag = full_rank.then(|| (0..q).map(|j| gram_inv[(j, j)].re).collect());
@@ -250,20 +250,31 @@ pub fn propagate_factored(
         .flat_map(|row| row[..runs].iter().map(moments))
         .collect();
     let row_moments = |a: usize| &mom[a * runs..(a + 1) * runs];
-    let a_vec = DMatrix::from_fn(q, m, |j, i| -apinv[(j, i)] * row_weights[i]);
+    // a = −A⁺ G = −(AᴴA)⁺ Aᴴ G, one `q × q × rows` product from the `(AᴴA)⁺`
+    // of the SVD of `R` (issue 15; `R⁺ Qᴴ` through the reflectors took three).
+    // Not the normal equations: `AᴴA` is never formed, and with the SVD of
+    // `R + δR` backward stable, `(R̃ᴴR̃)⁻¹ Rᴴ = R̃⁻¹ (I − R̃⁻ᴴ δRᴴ)` is `A⁺`
+    // within `ε κ ‖A⁺‖`, the accuracy of `R̃⁻¹ Qᴴ` itself.
+    let neg_ah_g = DMatrix::from_fn(q, m, |j, i| -amat[(i, j)].conj() * row_weights[i]);
+    let a_vec = cmul(&gram_inv, &neg_ah_g);
     let b_vec: Vec<Complex64> = (0..m).map(|i| -r[i] * row_weights[i]).collect();
     let xi = DMatrix::from_fn(q, runs, |j, k| g_omega[k][j]);
     let zero = Complex64::from(0.0);
     let k_mat;
     let j_mat;
+    // Per used row, `mk = p3 ξᴴ` and `mj = s3 ξᵀ` (see below), which also
+    // give the cross terms of a row's own readings.
+    let mk;
+    let mj;
+    // s1, p1 per used row, s2, p2 per run.
+    let (mut s1, mut p1) = (vec![0.0; m], vec![zero; m]);
     {
-        // s1, p1 per used row, s2, p2 per run, p3, s3 per reading, in one
+        // s1, p1, s2, p2 and the readings' moments as real matrices, in one
         // pass over the readings (the same sums in the same order as one
-        // pass each).
-        let (mut s1, mut p1) = (vec![0.0; m], vec![zero; m]);
+        // pass each): [Re p; Im p] (2m × runs) and s (m × runs).
         let (mut s2, mut p2) = (vec![0.0; runs], vec![zero; runs]);
-        let mut p3 = DMatrix::from_element(m, runs, zero);
-        let mut s3 = DMatrix::from_element(m, runs, zero);
+        let mut pp = DMatrix::<f64>::zeros(2 * m, runs);
+        let mut sm = DMatrix::<f64>::zeros(m, runs);
         for (i, &a) in used_rows.iter().enumerate() {
             let bi = b_vec[i];
             let bn = bi.norm_sqr();
@@ -273,10 +284,35 @@ pub fn propagate_factored(
                 p1[i] += pk * l * l;
                 s2[k] += sk * bn;
                 p2[k] += pk.conj() * bi * bi;
-                p3[(i, k)] = pk * l * bi.conj();
-                s3[(i, k)] = sk * l * bi;
+                pp[(i, k)] = pk.re;
+                pp[(m + i, k)] = pk.im;
+                sm[(i, k)] = sk;
             }
         }
+        // p3 = diag(b̄) P diag(λ) and s3 = diag(b) S diag(λ), so
+        // mk = p3 ξᴴ = diag(b̄) P (diag(λ) ξᴴ) and mj = diag(b) S (diag(λ) ξᵀ):
+        // with S real, three real products instead of eight (issue 15).
+        let mut xy = DMatrix::<f64>::zeros(runs, 4 * q);
+        for k in 0..runs {
+            for j in 0..q {
+                let x = lambda[k] * xi[(j, k)].conj();
+                let y = lambda[k] * xi[(j, k)];
+                xy[(k, j)] = x.re;
+                xy[(k, q + j)] = x.im;
+                xy[(k, 2 * q + j)] = y.re;
+                xy[(k, 3 * q + j)] = y.im;
+            }
+        }
+        let px = &pp * xy.columns(0, 2 * q);
+        let sy = &sm * xy.columns(2 * q, 2 * q);
+        mk = DMatrix::from_fn(m, q, |i, j| {
+            let re = px[(i, j)] - px[(m + i, q + j)];
+            let im = px[(i, q + j)] + px[(m + i, j)];
+            b_vec[i].conj() * Complex64::new(re, im)
+        });
+        mj = DMatrix::from_fn(m, q, |i, j| {
+            b_vec[i] * Complex64::new(sy[(i, j)], sy[(i, q + j)])
+        });
         let xi_scaled = |d: &[f64]| {
             let mut x = xi.clone();
             for (k, mut col) in x.column_iter_mut().enumerate() {
@@ -289,8 +325,6 @@ pub fn propagate_factored(
         // instead of three (issue 15). diag(s1) is real and diag(p1) enters
         // a symmetric form, so halving it on both sides is exact. Both in
         // one product `a [mk | mj]`.
-        let mk = cmul(&p3, &xi.adjoint());
-        let mj = cmul(&s3, &xi.transpose());
         let mut mkj = DMatrix::from_element(m, 2 * q, zero);
         for i in 0..m {
             let (half_s, half_p) = (s1[i] * 0.5, p1[i] * 0.5);
@@ -322,43 +356,55 @@ pub fn propagate_factored(
     // dR̂_a = W̃_a dC + Σ_k λ_k δ_ak: the direct part (alone `residual`), the
     // part through C (w K wᴴ, w J wᵀ), and for a used row the cross terms of
     // its own readings, whose share of dC is (w·a_i) λ_k δ + (w·ξ_k) b_i δ̄.
+    // Summed over the row's readings these are
+    //   E[u ē] = (w·a_i) s1_i + Σ_k (w·ξ_k) b_i λ̄_k p̄_k = (w·a_i) s1_i + w·conj(mk_i),
+    //   E[u e] = (w·a_i) p1_i + Σ_k (w·ξ_k) b_i λ_k s_k = (w·a_i) p1_i + w·mj_i,
+    // `q` products per row instead of a `rows × q × runs` product `W ξ` and
+    // a pass over the row's readings (issue 15).
     // `W` itself when every plane is used (no copy).
     let w_sub = (!used_planes.iter().copied().eq(0..planes))
         .then(|| DMatrix::from_fn(n, q, |a, j| w[(a, used_planes[j])]));
     let w_used = w_sub.as_ref().unwrap_or(w);
-    // [w K | w J | w ξ] in one product (n × (2q + runs)).
-    let mut kjx = DMatrix::from_element(q, 2 * q + runs, zero);
-    kjx.columns_mut(0, q).copy_from(&k_mat);
-    kjx.columns_mut(q, q).copy_from(&j_mat);
-    kjx.columns_mut(2 * q, runs).copy_from(&xi);
-    let wkjx = cmul(w_used, &kjx);
+    // [w K | w J] in one product (n × 2q).
+    let mut kj = DMatrix::from_element(q, 2 * q, zero);
+    kj.columns_mut(0, q).copy_from(&k_mat);
+    kj.columns_mut(q, q).copy_from(&j_mat);
+    let wkj = cmul(w_used, &kj);
     let mut through_correction = Vec::with_capacity(n);
     let mut remaining_cross = Vec::with_capacity(n);
     let mut residual = Vec::with_capacity(n);
     let mut prediction = Vec::with_capacity(n);
     for a in 0..n {
-        let (mut kd, mut jd) = (0.0, zero);
         let (mut kx, mut jx) = (zero, zero);
-        let own = position[a].map(|i| {
-            // w_a · a_i, the row's own share (never a rows × rows product).
-            (i, w_used.row(a).tr_dot(&a_vec.column(i)))
-        });
-        for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
-            let l = lambda[k];
-            kd += sk * l.norm_sqr();
-            jd += pk * l * l;
-            if let Some((i, wa)) = own {
-                let u = wa * l;
-                let v = wkjx[(a, 2 * q + k)] * b_vec[i];
-                kx += u * l.conj() * sk + v * l.conj() * pk.conj();
-                jx += u * l * pk + v * l * sk;
+        let (kd, jd) = match position[a] {
+            // The same sums, in the same order, as s1 and p1.
+            Some(i) => {
+                // w_a · a_i, the row's own share (never a rows × rows product).
+                let wa = w_used.row(a).tr_dot(&a_vec.column(i));
+                kx = wa * s1[i];
+                jx = wa * p1[i];
+                for j in 0..q {
+                    let waj = w_used[(a, j)];
+                    kx += waj * mk[(i, j)].conj();
+                    jx += waj * mj[(i, j)];
+                }
+                (s1[i], p1[i])
             }
-        }
+            None => {
+                let (mut kd, mut jd) = (0.0, zero);
+                for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
+                    let l = lambda[k];
+                    kd += sk * l.norm_sqr();
+                    jd += pk * l * l;
+                }
+                (kd, jd)
+            }
+        };
         let (mut kt, mut jt) = (zero, zero);
         for j in 0..q {
             let wa = w_used[(a, j)];
-            kt += wkjx[(a, j)] * wa.conj();
-            jt += wkjx[(a, q + j)] * wa;
+            kt += wkj[(a, j)] * wa.conj();
+            jt += wkj[(a, q + j)] * wa;
         }
         let through = real_cov(kt.re, jt);
         // E[u ēₐ] = kx and E[u eₐ] = jx as a real cross-covariance

@@ -300,7 +300,7 @@ fn newton(mut inside: impl FnMut(f64) -> [f64; 4], mut x: f64, mut lo: f64, mut 
             x = if slope > 0.0 { x - f / slope } else { f64::NAN };
             continue;
         }
-        if !(d1 > 0.0) {
+        if !(d1 > 0.0 && d1.is_finite()) {
             x = f64::NAN;
             continue;
         }

@@ -41,6 +41,7 @@ mod dof;
 mod polar;
 mod propagate;
 mod quadrature;
+mod ray;
 mod region;
 mod remaining;
 mod trust;

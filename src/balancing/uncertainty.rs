@@ -38,6 +38,7 @@ mod apply;
 mod arc;
 mod bias;
 mod dof;
+mod newton;
 mod polar;
 mod propagate;
 mod quadrature;

@@ -7,7 +7,12 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use crate::balancing::{self, InputError, SolveOptions};
+use crate::balancing::{self, InputError};
+
+pub mod pretty;
+mod solve;
+
+use solve::solve_file;
 
 #[derive(Debug, Parser)]
 #[command(
@@ -175,29 +180,12 @@ fn residual_file(file: &std::path::Path, max: usize) -> Result<serde_json::Value
     Ok(serde_json::to_value(check).expect("check serialises"))
 }
 
-fn solve_file(file: &std::path::Path, options: Option<&std::path::Path>, max: usize) -> ExitCode {
-    let (value, code) = match solve_file_inner(file, options, max) {
-        Ok(solution) => (solution, ExitCode::SUCCESS),
-        Err(err) => (err.to_json(), ExitCode::from(2)),
-    };
-    let text = serde_json::to_string_pretty(&value).expect("JSON values serialise");
-    match print_line(&text) {
-        Ok(()) => code,
-        // `fieldbal solve FILE | head`: the reader has what it wanted; stop quietly.
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => code,
-        Err(e) => {
-            eprintln!("fieldbal solve: cannot write the answer: {e}");
-            ExitCode::FAILURE
-        }
-    }
-}
-
 /// Write `text` and a newline to standard output; unlike `println!`, a
 /// closed pipe is an error to handle, not a panic.
-fn print_line(text: &str) -> std::io::Result<()> {
+fn print_line(text: &[u8]) -> std::io::Result<()> {
     use std::io::Write;
     let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())?;
+    out.write_all(text)?;
     out.write_all(b"\n")?;
     out.flush()
 }
@@ -234,41 +222,6 @@ fn read(path: &std::path::Path, max: usize) -> Result<Vec<u8>, InputError> {
         });
     }
     Ok(buf)
-}
-
-fn solve_file_inner(
-    file: &std::path::Path,
-    options: Option<&std::path::Path>,
-    max: usize,
-) -> Result<serde_json::Value, InputError> {
-    let bytes = read(file, max)?;
-    let value: serde_json::Value = balancing::from_json(&bytes)?;
-    if value.get("cases").is_some() {
-        return identify_cases(&bytes);
-    }
-    let (session, mut opts) = balancing::parse_session_file(&bytes)?;
-    if let Some(path) = options {
-        opts = balancing::from_json::<SolveOptions>(&read(path, max)?)
-            .map_err(|e| e.under("options"))?;
-    }
-    let solution = balancing::solve(&session, &opts)?;
-    Ok(serde_json::to_value(solution).expect("solution serialises"))
-}
-
-/// A file of worked identification cases (method §6): estimate each one.
-fn identify_cases(bytes: &[u8]) -> Result<serde_json::Value, InputError> {
-    #[derive(serde::Deserialize)]
-    struct Cases {
-        cases: Vec<crate::identification::textbook::Case>,
-    }
-    let file: Cases = balancing::from_json(bytes)?;
-    let mut out = Vec::with_capacity(file.cases.len());
-    for (i, case) in file.cases.iter().enumerate() {
-        let estimate = crate::identification::textbook::estimate_case(case)
-            .map_err(|e| e.under(&format!("cases[{i}]")))?;
-        out.push(serde_json::json!({ "name": case.name, "estimate": estimate }));
-    }
-    Ok(serde_json::json!({ "cases": out }))
 }
 
 /// `fieldbal coefficients`: the sessions' pooled coefficients (v2 "Machines"),

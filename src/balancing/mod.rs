@@ -19,7 +19,7 @@ pub mod uncertainty;
 
 // The modules' paths from before the grouping stay valid, so callers and
 // the documentation keep naming `balancing::model`, `balancing::solution`, ...
-pub use session::{error, limits, model, phasor, select, validate, wire};
+pub use session::{error, file, limits, model, phasor, select, validate, wire};
 pub use solve::{diagnostics, factor, influence, practical, report, solution};
 
 pub use error::{from_json, ErrorKind, InputError};
@@ -34,27 +34,19 @@ pub fn parse_session(bytes: &[u8]) -> Result<Session, InputError> {
 }
 
 /// A session file as `fieldbal solve` reads it: a bare session, or the
-/// examples' wrapper `{"session", "options", "description", "expected"}`.
+/// examples' wrapper `{"session", "options", "description", "expected"}`
+/// (`session::file`), validated, a wrapped session's errors named under `session.`.
 pub fn parse_session_file(bytes: &[u8]) -> Result<(Session, SolveOptions), InputError> {
-    #[derive(serde::Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct Wrapper {
-        session: Session,
-        #[serde(default)]
-        options: SolveOptions,
-        #[serde(default, rename = "description")]
-        _description: Option<String>,
-        #[serde(default, rename = "expected")]
-        _expected: Option<serde_json::Value>,
-    }
-    let value: serde_json::Value = from_json(bytes)?;
-    if value.get("session").is_some() {
-        let w: Wrapper = from_json(bytes)?;
-        validate_session(&w.session).map_err(|e| e.under("session"))?;
-        Ok((w.session, w.options))
-    } else {
-        Ok((parse_session(bytes)?, SolveOptions::default()))
-    }
+    let file = file::parse(bytes)?;
+    check_file(&file)?;
+    Ok((file.session, file.options))
+}
+
+/// Validate a session file's session, naming a wrapped session's fields under
+/// `session.`; the checked session can be solved without validating it again
+/// ([`solve_checked`]).
+pub fn check_file(file: &file::SessionFile) -> Result<validate::Checked<'_>, InputError> {
+    validate::check(&file.session).map_err(|e| if file.wrapped { e.under("session") } else { e })
 }
 
 /// Check a session against the contract (everything but solvability: a stored
@@ -67,4 +59,13 @@ pub fn validate_session(session: &Session) -> Result<(), InputError> {
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
     limits::check_options(options, &limits::Limits::current())?;
     job::solve(session, options)
+}
+
+/// [`solve`] of a session already validated (by [`check_file`] or `validate::check`).
+pub fn solve_checked(
+    checked: validate::Checked<'_>,
+    options: &SolveOptions,
+) -> Result<Solution, InputError> {
+    limits::check_options(options, &limits::Limits::current())?;
+    job::solve_checked(checked, options)
 }

@@ -22,12 +22,18 @@ use crate::balancing::select::select;
 use crate::balancing::solution::{Solution, TotalWeight};
 use crate::balancing::solve as one_shot;
 use crate::balancing::uncertainty::noise_options;
-use crate::balancing::validate::check;
+use crate::balancing::validate::{check, Checked};
 
 /// Solve with the v2 options: `from_run`, `influence_coefficients`, and the
 /// run checks; without them, exactly the v1 solve plus `run_checks`.
 pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, InputError> {
-    let checked = check(session)?;
+    solve_checked(check(session)?, options)
+}
+
+/// [`solve`] of a session its caller has already validated (`fieldbal solve`
+/// validates a file first, to name errors under `session.` when it is wrapped).
+pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Solution, InputError> {
+    let session = checked.session;
     if options.coefficients_from.is_some() && options.influence_coefficients.is_none() {
         return Err(InputError::invalid(
             "coefficients_unavailable",

@@ -73,7 +73,33 @@ impl InputError {
 /// Parse JSON into `T`, turning serde's error into an [`InputError`] whose
 /// `field` is the path of the offending value (for an unknown field, the path of
 /// the unknown field itself, so that `phase_dg` is named).
+///
+/// Valid input is parsed once, without tracking the path: tracking it keeps
+/// a `String` of every key and cost four times the parse on a large session
+/// (issue 15, BENCHMARKS.md). Only when that parse fails is the input parsed
+/// again by [`from_json_tracked`], whose error is the one returned, so errors
+/// are exactly the tracked parse's. Both parses run the same `Deserialize`
+/// code on the same `serde_json` reader (the tracking deserializer forwards
+/// every call), so they accept the same documents and build the same value
+/// (`tests/parse_equivalence.rs`).
 pub fn from_json<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
+    match as_text(bytes).and_then(|text| serde_json::from_str(text).ok()) {
+        Some(value) => Ok(value),
+        None => from_json_tracked(bytes),
+    }
+}
+
+/// The input as text when it is UTF-8, checked once for the whole document:
+/// reading from a `&str` spares `serde_json` checking every string again
+/// (a tenth of a large session's parse). Input that is not UTF-8 goes to the
+/// slow path, whose error names it.
+pub(crate) fn as_text(bytes: &[u8]) -> Option<&str> {
+    std::str::from_utf8(bytes).ok()
+}
+
+/// [`from_json`]'s slow path: parse while tracking the path of the value
+/// being read, so that an error names its field.
+pub fn from_json_tracked<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
     let mut de = serde_json::Deserializer::from_slice(bytes);
     let value = serde_path_to_error::deserialize(&mut de).map_err(|err| {
         let path = err.path().to_string();
@@ -86,7 +112,7 @@ pub fn from_json<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
     Ok(value)
 }
 
-fn classify(path: String, err: &serde_json::Error) -> InputError {
+pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
     use serde_json::error::Category;
     let text = err.to_string();
     let message = strip_position(&text);

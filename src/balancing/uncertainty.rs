@@ -195,3 +195,7 @@ mod tests {
 #[cfg(test)]
 #[path = "uncertainty/tests.rs"]
 mod region_tests;
+
+#[cfg(test)]
+#[path = "uncertainty/quantile_tests.rs"]
+mod quantile_tests;

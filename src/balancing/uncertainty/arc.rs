@@ -18,7 +18,8 @@
 //! comparing only levels fine enough to see a mass thin across (`σ₂/|μ|` in
 //! angle); one too thin for the finest level goes to the quadrature.
 
-use super::polar::{add, agree, Axes, Ray};
+use super::polar::agree;
+use super::ray::{add, Axes, Ray};
 
 /// The mean is far from the origin when `|μ| ≥ FAR σ₁`.
 const FAR: f64 = 8.0;

@@ -5,9 +5,10 @@
 use nalgebra::Matrix2;
 use num_complex::Complex64;
 
+use super::remaining::Row;
 use super::{
-    correction_uncertainty, reading_noise, remaining_amplitude_95, DEFAULT_AMPLITUDE_NOISE_PCT,
-    DEFAULT_PHASE_NOISE_DEG, MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
+    correction_uncertainty, reading_noise, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG,
+    MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
 };
 use crate::balancing::diagnostics::undetermined;
 use crate::balancing::error::InputError;
@@ -163,36 +164,35 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             .map(|&a| (fit.residual[a], &prop.prediction[a])),
         dof,
     );
-    // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
-    let ks: Vec<f64> = sel
-        .rows
-        .iter()
-        .filter_map(|&a| {
-            super::remaining::weight_sensitivity(
+    // Each row's conditioning on its own prediction (method 8.6), once per
+    // row for the calibration and the bound alike (issue 15).
+    let rows: Vec<Row> = (0..fit.residual.len())
+        .map(|a| {
+            Row::own(
+                fit.residual[a],
                 &prop.prediction[a],
                 &prop.through_correction[a],
                 &prop.remaining_cross[a],
             )
         })
         .collect();
+    // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
+    let ks: Vec<f64> = sel
+        .rows
+        .iter()
+        .filter_map(|&a| rows[a].sensitivity())
+        .collect();
     let pooled = super::remaining::Pooled {
         shrink,
         scale: super::remaining::calibrated_scale(&ks, dof, shrink),
     };
-    for (a, (res, &r)) in solution
+    for ((res, &r), row) in solution
         .predicted_residual
         .iter_mut()
         .zip(fit.residual.iter())
-        .enumerate()
+        .zip(&rows)
     {
-        let (through, cross) = (&prop.through_correction[a], &prop.remaining_cross[a]);
-        res.amplitude_95 = Some(remaining_amplitude_95(
-            r,
-            &prop.prediction[a],
-            through,
-            cross,
-            pooled,
-        ));
+        res.amplitude_95 = Some(row.amplitude_95(r, pooled));
     }
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {

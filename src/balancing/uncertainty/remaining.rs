@@ -67,7 +67,11 @@
 //! than half. On the tests' rotor at ten speeds the rows' errors also grow
 //! with the job's pooled residual (the conditioning uses each row's own
 //! prediction, and the rows share `dC`), which the calibration does not see:
-//! 96.8–97.6 % there (BENCHMARKS.md, issue 12 session 6).
+//! 96.8–97.6 % there (BENCHMARKS.md, issue 12 session 6). Conditioning on
+//! all the rows' predictions at once (method 8.8, tried in session 7) is
+//! exact to first order but undershoots there (92.1–94.7 %): the
+//! coefficients' own noise times the correction's error, left out, is not
+//! small beside the conditional spread (method §8, "All rows at once").
 
 use nalgebra::{Matrix2, Vector2};
 use num_complex::Complex64;
@@ -111,17 +115,66 @@ pub fn remaining_amplitude_95(
     cross: &Matrix2<f64>,
     pooled: Pooled,
 ) -> f64 {
-    let Some(p) = Parts::of(prediction, through_c, cross) else {
-        // R̂ ≡ r (as many rows as planes): R = R̂ + u, Gaussian.
-        return amplitude_95(r_hat, &sym(through_c));
-    };
-    // u = B v + ε (step 1), and r ~ N(S R̂, S Σ_v) given R̂ (step 2); the
-    // covariance scaled by the calibration of step 4.
-    let rhat = Vector2::new(r_hat.re, r_hat.im);
-    let s = pooled.shrink.clamp(0.0, 1.0);
-    let centre = p.b * rhat + p.i_b * rhat * s;
-    let cov = (p.eps + p.k_mat * s) * pooled.scale.max(0.0);
-    amplitude_95(Complex64::new(centre.x, centre.y), &sym(&cov))
+    Row::own(r_hat, prediction, through_c, cross).amplitude_95(r_hat, pooled)
+}
+
+/// A row's bound before the job's pooled figures: `R ~ N(m + S (R̂ − m),
+/// f (Σ_ε + S K))` (method 8.6), `m` the share of the remaining vibration
+/// that the predictions reveal, `Σ_ε` the covariance of the rest of `u`, and
+/// `K` what the residual adds per unit of the weight `S`. Computed once per
+/// row and solve (for the calibration's [`Row::sensitivity`] and the bound).
+#[derive(Debug, Clone, Copy)]
+pub enum Row {
+    /// `R̂ ≡ r` (as many rows as planes, no prediction noise): `N(R̂, Σ_u)`.
+    Exact(Matrix2<f64>),
+    /// The bound's parts `m`, `Σ_ε`, `K`.
+    Parts(Vector2<f64>, Matrix2<f64>, Matrix2<f64>),
+}
+
+impl Row {
+    /// Conditioned on the row's own prediction (steps 1–3): `m = B R̂`,
+    /// `Σ_ε = Σ_u − Σ_uv Σ_v⁻¹ Σ_vu`, `K = (I − B) Σ_v (I − B)ᵀ`.
+    pub fn own(
+        r_hat: Complex64,
+        prediction: &Matrix2<f64>,
+        through_c: &Matrix2<f64>,
+        cross: &Matrix2<f64>,
+    ) -> Row {
+        match Parts::of(prediction, through_c, cross) {
+            None => Row::Exact(sym(through_c)),
+            Some(p) => Row::Parts(p.b * v2(r_hat), p.eps, p.k_mat),
+        }
+    }
+
+    /// How much the weight moves the bound (step 4): `k = tr K / tr Σ_ε`, the
+    /// residual's share of the bound's variance per unit of `S`; `None` for a
+    /// row whose bound does not depend on `S`.
+    pub fn sensitivity(&self) -> Option<f64> {
+        let Row::Parts(_, eps, k_mat) = self else {
+            return None;
+        };
+        let (tk, te) = (k_mat.trace(), eps.trace());
+        let k = tk / te.max(1e-12 * tk);
+        (k.is_finite() && k > 0.0).then_some(k)
+    }
+
+    /// The 95 % bound of the row's remaining amplitude (step 3, the
+    /// covariance scaled by step 4's calibration).
+    pub fn amplitude_95(&self, r_hat: Complex64, pooled: Pooled) -> f64 {
+        match self {
+            Row::Exact(su) => amplitude_95(r_hat, su),
+            Row::Parts(m, eps, k_mat) => {
+                let s = pooled.shrink.clamp(0.0, 1.0);
+                let centre = m + (v2(r_hat) - m) * s;
+                let cov = (eps + k_mat * s) * pooled.scale.max(0.0);
+                amplitude_95(Complex64::new(centre.x, centre.y), &sym(&cov))
+            }
+        }
+    }
+}
+
+fn v2(z: Complex64) -> Vector2<f64> {
+    Vector2::new(z.re, z.im)
 }
 
 /// The job's pooled figures of the bound (module doc, steps 2 and 4).
@@ -144,10 +197,9 @@ fn sym(m: &Matrix2<f64>) -> Matrix2<f64> {
     (m + m.transpose()) * 0.5
 }
 
-/// A row's conditioning (step 1): `B`, `I − B`, `Σ_ε` and `K = (I − B) Σ_v (I − B)ᵀ`.
+/// A row's conditioning (step 1): `B`, `Σ_ε` and `K = (I − B) Σ_v (I − B)ᵀ`.
 struct Parts {
     b: Matrix2<f64>,
-    i_b: Matrix2<f64>,
     eps: Matrix2<f64>,
     k_mat: Matrix2<f64>,
 }
@@ -164,25 +216,20 @@ impl Parts {
         let i_b = Matrix2::identity() - b;
         Some(Parts {
             b,
-            i_b,
             eps: sym(&(sym(through_c) - b * cross.transpose())),
             k_mat: sym(&(i_b * sv * i_b.transpose())),
         })
     }
 }
 
-/// How much the weight moves a row's bound (step 4): `k = tr K / tr Σ_ε`, the
-/// residual's share of the bound's variance per unit of `S`; `None` for a row
-/// without prediction noise (its bound does not depend on `S`).
+/// How much the weight moves a row's bound conditioned on its own
+/// prediction ([`Row::sensitivity`]).
 pub fn weight_sensitivity(
     prediction: &Matrix2<f64>,
     through_c: &Matrix2<f64>,
     cross: &Matrix2<f64>,
 ) -> Option<f64> {
-    let p = Parts::of(prediction, through_c, cross)?;
-    let (tk, te) = (p.k_mat.trace(), p.eps.trace());
-    let k = tk / te.max(1e-12 * tk);
-    (k.is_finite() && k > 0.0).then_some(k)
+    Row::own(Complex64::new(0.0, 0.0), prediction, through_c, cross).sensitivity()
 }
 
 /// Standard normal quantiles at the midpoints of 16 equally likely bins: the

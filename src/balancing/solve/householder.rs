@@ -24,15 +24,29 @@ pub struct Householder {
     r: DMatrix<Complex64>,
 }
 
-/// `Σ_i conj(u_i) x_i`.
+/// `Σ_i conj(u_i) x_i`, in four interleaved partial sums: one running sum
+/// is a chain the compiler may not reorder, four independent ones overlap
+/// (issue 15: the same sum to rounding, in another order).
 #[inline]
 fn dot_conj(u: &[Complex64], x: &[Complex64]) -> Complex64 {
-    let (mut re, mut im) = (0.0, 0.0);
-    for (a, b) in u.iter().zip(x) {
-        re += a.re * b.re + a.im * b.im;
-        im += a.re * b.im - a.im * b.re;
+    let n = u.len().min(x.len());
+    let body = n - n % 4;
+    let (mut re, mut im) = ([0.0f64; 4], [0.0f64; 4]);
+    for (a, b) in u[..body].chunks_exact(4).zip(x[..body].chunks_exact(4)) {
+        for l in 0..4 {
+            re[l] += a[l].re * b[l].re + a[l].im * b[l].im;
+            im[l] += a[l].re * b[l].im - a[l].im * b[l].re;
+        }
     }
-    Complex64::new(re, im)
+    let (mut sr, mut si) = (
+        (re[0] + re[1]) + (re[2] + re[3]),
+        (im[0] + im[1]) + (im[2] + im[3]),
+    );
+    for (a, b) in u[body..n].iter().zip(&x[body..n]) {
+        sr += a.re * b.re + a.im * b.im;
+        si += a.re * b.im - a.im * b.re;
+    }
+    Complex64::new(sr, si)
 }
 
 /// `x ← x − 2 u (uᴴ x)`: one reflector on one column.

@@ -242,14 +242,11 @@ pub fn propagate_factored(
     // O(rows·runs·q + rows·q²) and memory O(rows·(runs + q)), never a
     // Jacobian per reading (issue 15).
     let m = used_rows.len();
-    // Moments of every reading, flat at `a * runs + k` (one allocation, not
-    // one per row: issue 15).
-    let mom: Vec<(f64, Complex64)> = cov
-        .iter()
-        .take(n)
-        .flat_map(|row| row[..runs].iter().map(moments))
-        .collect();
-    let row_moments = |a: usize| &mom[a * runs..(a + 1) * runs];
+    // Moments of a row's readings, formed where they are summed (four
+    // additions each: cheaper than a flat copy of them all, issue 15).
+    let row_moments = |a: usize| cov[a][..runs].iter().map(moments);
+    // |λ_k|² and λ_k², once per run rather than once per reading.
+    let lambda_sq: Vec<(f64, Complex64)> = lambda.iter().map(|l| (l.norm_sqr(), l * l)).collect();
     // a = −A⁺ G = −(AᴴA)⁺ Aᴴ G, one `q × q × rows` product from the `(AᴴA)⁺`
     // of the SVD of `R` (issue 15; `R⁺ Qᴴ` through the reflectors took three).
     // Not the normal equations: `AᴴA` is never formed, and with the SVD of
@@ -277,13 +274,13 @@ pub fn propagate_factored(
         let mut sm = DMatrix::<f64>::zeros(m, runs);
         for (i, &a) in used_rows.iter().enumerate() {
             let bi = b_vec[i];
-            let bn = bi.norm_sqr();
-            for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
-                let l = lambda[k];
-                s1[i] += sk * l.norm_sqr();
-                p1[i] += pk * l * l;
+            let (bn, b2) = (bi.norm_sqr(), bi * bi);
+            for (k, (sk, pk)) in row_moments(a).enumerate() {
+                let (ln, l2) = lambda_sq[k];
+                s1[i] += sk * ln;
+                p1[i] += pk * l2;
                 s2[k] += sk * bn;
-                p2[k] += pk.conj() * bi * bi;
+                p2[k] += pk.conj() * b2;
                 pp[(i, k)] = pk.re;
                 pp[(m + i, k)] = pk.im;
                 sm[(i, k)] = sk;
@@ -392,10 +389,10 @@ pub fn propagate_factored(
             }
             None => {
                 let (mut kd, mut jd) = (0.0, zero);
-                for (k, &(sk, pk)) in row_moments(a).iter().enumerate() {
-                    let l = lambda[k];
-                    kd += sk * l.norm_sqr();
-                    jd += pk * l * l;
+                for (k, (sk, pk)) in row_moments(a).enumerate() {
+                    let (ln, l2) = lambda_sq[k];
+                    kd += sk * ln;
+                    jd += pk * l2;
                 }
                 (kd, jd)
             }

@@ -35,14 +35,10 @@ use nalgebra::Matrix2;
 use num_complex::Complex64;
 
 mod apply;
-mod arc;
 mod bias;
 mod dof;
-mod newton;
-mod polar;
 mod propagate;
-mod quadrature;
-mod ray;
+mod quantile;
 mod region;
 mod remaining;
 mod trust;

@@ -9,7 +9,7 @@ use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
 use super::amplitude_95;
-use super::quadrature;
+use super::quantile::quadrature;
 use super::region::principal;
 
 /// The 95 % quantile of `|R|` by bisection on the quadrature's `P` over the

@@ -5,10 +5,10 @@
 use nalgebra::{Matrix2, SymmetricEigen, Vector2};
 use num_complex::Complex64;
 
-use super::arc::Arc;
-use super::newton::newton;
-use super::polar::Polar;
-use super::quadrature;
+use super::quantile::arc::Arc;
+use super::quantile::newton::newton;
+use super::quantile::polar::Polar;
+use super::quantile::quadrature;
 use crate::balancing::model::{AngleDirection, Conventions};
 use crate::balancing::phasor::{weight_out, wrap_deg};
 use crate::balancing::solution::Uncertainty;

@@ -37,7 +37,7 @@ const MAX_LEVEL: usize = 7;
 /// The rule for one row: rays at the nodes built so far, in the order of
 /// their levels (level 0: the 9 nodes from end to end; level `l ≥ 1`: the
 /// `8·2^(l−1)` midpoints it adds).
-pub(super) struct Arc {
+pub(in crate::balancing::uncertainty) struct Arc {
     axes: Axes,
     centre: f64,
     half: f64,
@@ -49,7 +49,12 @@ pub(super) struct Arc {
 impl Arc {
     /// The rule for `N((μ₁, μ₂), diag(σ₁², σ₂²))`, `σ₁ ≥ σ₂`; `None` unless
     /// the mean is far from the origin beside `σ₁`.
-    pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Option<Self> {
+    pub(in crate::balancing::uncertainty) fn new(
+        mu1: f64,
+        mu2: f64,
+        s1: f64,
+        s2: f64,
+    ) -> Option<Self> {
         let m = mu1.hypot(mu2);
         if !(m >= FAR * s1 && s2 > 0.0 && m.is_finite()) {
             return None;
@@ -120,13 +125,13 @@ impl Arc {
     /// `[P(ρ), P'(ρ)]`, or `None` where the rule did not converge (the
     /// tests' view of [`Self::moments`]).
     #[cfg(test)]
-    pub(super) fn inside(&mut self, rho: f64) -> Option<[f64; 2]> {
+    pub(in crate::balancing::uncertainty) fn inside(&mut self, rho: f64) -> Option<[f64; 2]> {
         self.moments(rho).map(|[p, dp, ..]| [p, dp])
     }
 
     /// `[P, P', P'', P''']` at ρ, or `None` where the rule did not converge
     /// (convergence is judged on `P` and `P'`).
-    pub(super) fn moments(&mut self, rho: f64) -> Option<[f64; 4]> {
+    pub(in crate::balancing::uncertainty) fn moments(&mut self, rho: f64) -> Option<[f64; 4]> {
         let mut inner = [0.0; 4];
         let mut last: Option<[f64; 2]> = None;
         let mut done = 0;

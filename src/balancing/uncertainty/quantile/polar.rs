@@ -58,7 +58,11 @@ const SQUEEZE: f64 = 2.0;
 
 /// Two successive sums `[P, P']` of a rule agree: `P` to `tol[0]`, `P'` to
 /// `tol[1]` relative (`arc` uses the same test, with its own tolerances).
-pub(super) fn agree(prev: Option<[f64; 2]>, now: [f64; 2], tol: [f64; 2]) -> bool {
+pub(in crate::balancing::uncertainty) fn agree(
+    prev: Option<[f64; 2]>,
+    now: [f64; 2],
+    tol: [f64; 2],
+) -> bool {
     prev.is_some_and(|prev| {
         (now[0] - prev[0]).abs() <= tol[0] && (now[1] - prev[1]).abs() <= tol[1] * now[1].abs()
     })
@@ -98,7 +102,7 @@ fn directions() -> &'static [(f64, f64); HALF] {
 }
 
 /// The rule for one row: the rays computed so far, coarse levels first.
-pub(super) struct Polar {
+pub(in crate::balancing::uncertainty) struct Polar {
     axes: Axes,
     central: bool,
     /// Off the origin but unmapped (`s = 1`): rays in `[0, π)`, each also
@@ -119,7 +123,12 @@ impl Polar {
     /// The rule for `N((μ₁, μ₂), diag(σ₁², σ₂²))`, `σ₁ ≥ σ₂`; `None` where
     /// the mass is too narrow in angle for the finest level (then the
     /// quadrature is used).
-    pub(super) fn new(mu1: f64, mu2: f64, s1: f64, s2: f64) -> Option<Self> {
+    pub(in crate::balancing::uncertainty) fn new(
+        mu1: f64,
+        mu2: f64,
+        s1: f64,
+        s2: f64,
+    ) -> Option<Self> {
         // Angular width of the mass seen from the origin: at least σ₂ over
         // the larger of |μ| and σ₁. Start where the spacing (at θ₀, where
         // the map packs the nodes) is at most twice that, so that no coarse
@@ -191,13 +200,13 @@ impl Polar {
     /// `[P(ρ), P'(ρ)]`, or `None` where the rule did not converge (the
     /// tests' view of [`Self::moments`]).
     #[cfg(test)]
-    pub(super) fn inside(&mut self, rho: f64) -> Option<[f64; 2]> {
+    pub(in crate::balancing::uncertainty) fn inside(&mut self, rho: f64) -> Option<[f64; 2]> {
         self.moments(rho).map(|[p, dp, ..]| [p, dp])
     }
 
     /// `[P, P', P'', P''']` at ρ, or `None` where the rule did not converge
     /// (convergence is judged on `P` and `P'`).
-    pub(super) fn moments(&mut self, rho: f64) -> Option<[f64; 4]> {
+    pub(in crate::balancing::uncertainty) fn moments(&mut self, rho: f64) -> Option<[f64; 4]> {
         let mut sum = [0.0; 4];
         let mut last: Option<[f64; 2]> = None;
         let mut done = 0;

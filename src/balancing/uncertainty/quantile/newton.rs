@@ -20,7 +20,7 @@ const TOL_Q: f64 = 1e-7;
 /// The quadrature has no `P''`, and its `P'` is not refined with `P` (off
 /// by a third for masses thin across): there the steps are secants of `P`
 /// after the first, until `P` itself is within [`TOL_Q`].
-pub(super) fn newton(
+pub(in crate::balancing::uncertainty) fn newton(
     mut inside: impl FnMut(f64) -> [f64; 4],
     mut x: f64,
     mut lo: f64,

@@ -3,7 +3,7 @@
 //! trapezoidal rule (`polar`) does not converge at its finest level, and the
 //! reference the tests hold the fast path to.
 
-use super::region::normal_cdf;
+use super::super::region::normal_cdf;
 
 /// Beyond this many standard deviations a normal tail is below 1e-17: `normal_cdf`
 /// returns exactly 1 from 8.3 on.
@@ -21,7 +21,13 @@ const MIN_SPLITS: u32 = 3;
 
 /// `P((μ₁+σ₁z₁)² + (μ₂+σ₂z₂)² ≤ ρ²)` for independent standard normal z₁, z₂,
 /// and its derivative in ρ.
-pub(super) fn inside(mu1: f64, mu2: f64, s1: f64, s2: f64, rho: f64) -> [f64; 2] {
+pub(in crate::balancing::uncertainty) fn inside(
+    mu1: f64,
+    mu2: f64,
+    s1: f64,
+    s2: f64,
+    rho: f64,
+) -> [f64; 2] {
     // In `u` with μ₁+σ₁z₁ = ρ sin u, h = ρ cos u: the square-root kinks of the
     // integrand where h → 0 become smooth ends, so Simpson converges fast; and
     // the derivative's 1/h (from ∂h/∂ρ = ρ/h) cancels against dz₁ = h/σ₁ du.

@@ -3,7 +3,7 @@
 //! along the ray (the formulas are in `polar`'s module doc), and the
 //! Gaussian's principal-axes constants the rays share.
 
-use super::region::normal_cdf;
+use super::super::region::normal_cdf;
 
 /// Rays whose `E/2` of `polar`'s module doc exceeds this carry under `e^{−60}`
 /// (10⁻²⁶) of the density's peak: nothing in 10⁻¹⁰, even summed over every

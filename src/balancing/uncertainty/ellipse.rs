@@ -74,7 +74,7 @@ impl Ellipse {
         let h = -(m12 + m12.signum() * disc.sqrt());
         let offset = |n: [f64; 2]| {
             let s = l1 * n[0] * n[0] + l2 * n[1] * n[1];
-            if !(s > 0.0) {
+            if s.is_nan() || s <= 0.0 {
                 // Σn = 0 along n: a segment pointing at the origin.
                 return 0.0;
             }
@@ -113,12 +113,12 @@ fn secular(alpha: [f64; 2], beta: [f64; 2]) -> [f64; 2] {
     for _ in 0..200 {
         let ([t0, d0], [t1, d1]) = (term(x, 0), term(x, 1));
         let g = t0 * t0 + t1 * t1 - 1.0;
-        if !(g > 0.0) {
+        if g.is_nan() || g <= 0.0 {
             break;
         }
         let dg = -2.0 * (d0 + d1);
         let step = -g / dg;
-        if !(step > 1e-16 * x) || !step.is_finite() {
+        if step.is_nan() || step <= 1e-16 * x || step.is_infinite() {
             break;
         }
         x += step;

@@ -21,10 +21,9 @@ impl Arc {
         s1: f64,
         s2: f64,
     ) -> Option<Self> {
-        if !(mu1.hypot(mu2) >= FAR * s1) {
-            return None;
-        }
-        Polar::new(mu1, mu2, s1, s2).map(Arc)
+        (mu1.hypot(mu2) >= FAR * s1)
+            .then(|| Polar::new(mu1, mu2, s1, s2).map(Arc))
+            .flatten()
     }
 
     /// `[P(ρ), P'(ρ)]`, or `None` where the rule does not apply.

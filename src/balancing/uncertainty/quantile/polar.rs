@@ -92,7 +92,7 @@ impl Polar {
     fn strip(&self, n: f64, rho: f64) -> f64 {
         let ([m1, m2], [s1, s2]) = (self.mu, self.s);
         let c = self.var[1] * (m2 * m2 + n);
-        if !(c > 0.0) {
+        if c.is_nan() || c <= 0.0 {
             return 0.0;
         }
         // Roots `u ± iv` of the quadratic in t; its discriminant is
@@ -173,10 +173,11 @@ impl Polar {
             for r in [n / (b + sq), (sq + b) / a] {
                 // Also skips the infinite and NaN `r₊` of a ray that never
                 // leaves the disc (`a = 0`, `σ₂ = 0`): it contributes 0.
-                if !(0.5 * r * r <= NEGLIGIBLE) {
+                let half = 0.5 * r * r;
+                if half.is_nan() || half > NEGLIGIBLE {
                     continue;
                 }
-                let g = (-0.5 * r * r).exp();
+                let g = (-half).exp();
                 let h = r * r1;
                 let h1 = r1 * r1 + r * r2;
                 let h2 = 3.0 * r1 * r2 + r * r3;

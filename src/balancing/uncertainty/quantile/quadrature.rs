@@ -37,7 +37,7 @@ pub(in crate::balancing::uncertainty) fn inside(
         // with z± = (±w − μ₁)/σ₁, w = √(ρ² − μ₂²), in closed form (Simpson
         // on the step this is in u was up to 4·10⁻⁵ off; issue 15, session 8).
         let w2 = rho * rho - mu2 * mu2;
-        if !(w2 > 0.0) {
+        if w2.is_nan() || w2 <= 0.0 {
             return [0.0, 0.0];
         }
         let w = w2.sqrt();

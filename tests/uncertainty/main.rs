@@ -5,6 +5,7 @@
 //! invalid noise options. This file holds the generated rotor and sessions.
 
 mod calibration;
+mod dependent_planes;
 mod eiv;
 mod linearisation;
 mod noise_options;

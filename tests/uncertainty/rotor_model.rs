@@ -29,7 +29,7 @@ const RADIUS_M: f64 = 0.1;
 /// Exact influence coefficients (µm per gram at angle 0 in the internal frame),
 /// rows speed-major × sensors, and the reference vibration of the rotor's own
 /// unbalance, at each of `speeds_rpm`.
-fn response(speeds_rpm: &[f64]) -> (DMatrix<Complex64>, DVector<Complex64>) {
+fn response(speeds_rpm: &[f64], planes: &[usize]) -> (DMatrix<Complex64>, DVector<Complex64>) {
     let mut k = DMatrix::<f64>::zeros(NODES, NODES);
     for i in 0..NODES - 2 {
         let d = [(i, 1.0), (i + 1, -2.0), (i + 2, 1.0)];
@@ -53,7 +53,7 @@ fn response(speeds_rpm: &[f64]) -> (DMatrix<Complex64>, DVector<Complex64>) {
     .map(|&(m, a)| Complex64::from_polar(m, a))
     .collect();
     let rows = speeds_rpm.len() * SENSORS.len();
-    let mut w = DMatrix::zeros(rows, PLANES.len());
+    let mut w = DMatrix::zeros(rows, planes.len());
     let mut y0 = DVector::zeros(rows);
     for (p, &rpm) in speeds_rpm.iter().enumerate() {
         let om = rpm * std::f64::consts::TAU / 60.0;
@@ -78,7 +78,7 @@ fn response(speeds_rpm: &[f64]) -> (DMatrix<Complex64>, DVector<Complex64>) {
         for (s, &node) in SENSORS.iter().enumerate() {
             y0[p * SENSORS.len() + s] = x0[node];
         }
-        for (j, &plane) in PLANES.iter().enumerate() {
+        for (j, &plane) in planes.iter().enumerate() {
             let x = solve(DVector::from_fn(NODES, |i, _| {
                 Complex64::from(if i == plane { 1e-3 * RADIUS_M } else { 0.0 })
             }));
@@ -100,7 +100,13 @@ fn response(speeds_rpm: &[f64]) -> (DMatrix<Complex64>, DVector<Complex64>) {
 /// trial far smaller than it was called, which is why the ten-speed cases
 /// looked so much worse than one speed (coverage 14–76 %).
 pub fn rotor(speeds_rpm: &[f64], effect: f64) -> Rotor {
-    let (w, y0) = response(speeds_rpm);
+    rotor_with_planes(speeds_rpm, &PLANES, effect)
+}
+
+/// [`rotor`] with corrections in the planes at the nodes `planes` (0–6)
+/// instead of both ends and the middle.
+pub fn rotor_with_planes(speeds_rpm: &[f64], planes: &[usize], effect: f64) -> Rotor {
+    let (w, y0) = response(speeds_rpm, planes);
     let c = -(w.clone().svd(true, true).solve(&y0, 1e-14).unwrap());
     let trial = (0..w.ncols())
         .map(|j| effect * y0.norm() / w.column(j).norm())

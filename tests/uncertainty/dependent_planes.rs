@@ -1,0 +1,153 @@
+//! Issue 12, item 1, nearly dependent planes at one speed: the flexible rotor
+//! of `rotor_model` read at 3000 rpm by four sensors, with corrections at
+//! nodes where two planes look nearly alike to the sensors. Noise stated
+//! (2 %, 2°), 400 realisations per trial effect (30 % and 100 %); measured
+//! per plane: the share of 95 % ellipses holding the exact correction and the
+//! mean squared Mahalanobis distance of the error in the reported covariance
+//! (2 when calibrated; less when too wide, more when too narrow).
+//!
+//! Two fixtures, both with condition number 30–50, and opposite failures
+//! (measured at main 43a89b6, per plane):
+//!
+//! - nodes 0, 1, 6 (P0, P1 adjacent; condition 33.8, residual 0.9 % of the
+//!   vibration): 98.5–99.8 % in P0, P1 (Mahalanobis² 0.55–1.14), 96.5–98.8 %
+//!   in P2: over-cautious, like planes P0, P2 of the held-out rotor of
+//!   scripts/coverage_heldout.py (99.3–100 %, residual exactly 0 there);
+//! - nodes 1, 2, 4 (condition 32.5, residual 5.1 %): 61–83 % over two seeds
+//!   (Mahalanobis² 3.1–6.7): too narrow; nodes 0, 3, 4 (27.9, 3.8 %) 75–88 %.
+//!
+//! So the first-order ellipse fails both ways along the weak direction of
+//! `A`, and the residual decides which: method 8.4, "Nearly dependent
+//! planes", gives the diagnosis and why replacing the fitted residual in the
+//! second term of (8.2) is not the fix.
+//!
+//! Measurement mode until the fix lands: what holds today and must keep
+//! holding is asserted (the fixture is what it says; with the small residual
+//! no plane falls below 93 %); the full 93–97 % window on both fixtures is the
+//! ignored test, which fails today (`cargo test --release --test uncertainty
+//! dependent -- --nocapture --include-ignored` prints the figures).
+
+use fieldbal::balancing::model::SolveOptions;
+use fieldbal::balancing::uncertainty::CHI2_2_95;
+use nalgebra::Vector2;
+use num_complex::Complex64;
+use rand::rngs::StdRng;
+use rand::SeedableRng;
+
+use super::rotor_model::{rotor_with_planes, session};
+use super::{estimate, noisy, solve, LEAD_WITH};
+
+const SPEED: [f64; 1] = [3000.0];
+/// Correction planes at nodes 0, 1, 6: small residual (module doc).
+const SMALL_RESIDUAL: [usize; 3] = [0, 1, 6];
+/// Correction planes at nodes 1, 2, 4: a residual of 5 % (module doc).
+const LARGE_RESIDUAL: [usize; 3] = [1, 2, 4];
+const REALISATIONS: usize = 400;
+
+/// Per plane: (coverage of the ellipse, mean Mahalanobis² of the error).
+fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
+    let rotor = rotor_with_planes(&SPEED, nodes, effect);
+    let exact = rotor.readings();
+    let mut rng = StdRng::seed_from_u64(seed);
+    let options = SolveOptions {
+        amplitude_noise_pct: Some(2.0),
+        phase_noise_deg: Some(2.0),
+        ..SolveOptions::default()
+    };
+    let planes = rotor.trial.len();
+    let mut sums = vec![(0.0, 0.0); planes];
+    for _ in 0..REALISATIONS {
+        let y: Vec<Vec<Complex64>> = exact
+            .iter()
+            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
+            .collect();
+        let sol = solve(
+            &session(LEAD_WITH, &SPEED, &rotor.trial, &y, None),
+            &options,
+        );
+        for (j, sum) in sums.iter_mut().enumerate() {
+            let (z, cov) = estimate(&sol, j);
+            let d = z - rotor.correction(LEAD_WITH, j);
+            let v = Vector2::new(d.re, d.im);
+            let inv = cov
+                .try_inverse()
+                .expect("a noisy solve has a regular covariance");
+            let m2 = (v.transpose() * inv * v)[0];
+            sum.0 += f64::from(u8::from(m2 <= CHI2_2_95));
+            sum.1 += m2;
+        }
+    }
+    let r = REALISATIONS as f64;
+    sums.iter().map(|&(h, m)| (h / r, m / r)).collect()
+}
+
+/// Condition number of `W` and the exact fit's residual beside the vibration.
+fn fixture(nodes: &[usize]) -> (f64, f64) {
+    let rotor = rotor_with_planes(&SPEED, nodes, 1.0);
+    let sv = rotor.w.clone().singular_values();
+    let residual = (&rotor.y0 + &rotor.w * &rotor.c).norm() / rotor.y0.norm();
+    (sv.max() / sv.min(), residual)
+}
+
+/// Per trial effect (30 %, 100 %), the planes' (coverage, mean Mahalanobis²), printed.
+fn cases(nodes: &[usize], seed: u64) -> Vec<(f64, Vec<(f64, f64)>)> {
+    [0.3, 1.0]
+        .into_iter()
+        .enumerate()
+        .map(|(case, effect)| {
+            let per_plane = measure(nodes, effect, seed + case as u64);
+            eprintln!(
+                "planes at nodes {nodes:?}, 1 speed, trial {:.0} %: coverage {:.3?}, mean Mahalanobis² {:.2?}",
+                effect * 100.0,
+                per_plane.iter().map(|p| p.0).collect::<Vec<_>>(),
+                per_plane.iter().map(|p| p.1).collect::<Vec<_>>(),
+            );
+            (effect, per_plane)
+        })
+        .collect()
+}
+
+/// 3 binomial sd of 400 checks at 95 %: 3.3 %.
+fn sd3() -> f64 {
+    3.0 * (0.95 * 0.05 / REALISATIONS as f64).sqrt()
+}
+
+/// The planes whose coverage lies outside `window`.
+fn outside(cases: &[(f64, Vec<(f64, f64)>)], window: std::ops::RangeInclusive<f64>) -> Vec<String> {
+    cases
+        .iter()
+        .flat_map(|(effect, per_plane)| {
+            per_plane
+                .iter()
+                .enumerate()
+                .filter(|(_, p)| !window.contains(&p.0))
+                .map(move |(j, p)| format!("trial {effect}: P{j} {:.3}", p.0))
+        })
+        .collect()
+}
+
+#[test]
+fn both_dependent_plane_fixtures_are_ill_conditioned_and_leave_a_residual() {
+    for (nodes, least) in [(SMALL_RESIDUAL, 0.005), (LARGE_RESIDUAL, 0.03)] {
+        let (cond, residual) = fixture(&nodes);
+        assert!((30.0..=50.0).contains(&cond), "{nodes:?}: condition {cond}");
+        assert!(residual > least, "{nodes:?}: residual {residual}");
+    }
+}
+
+#[test]
+fn with_two_nearly_dependent_planes_and_a_small_residual_no_ellipse_holds_less_than_93_percent() {
+    let low = outside(&cases(&SMALL_RESIDUAL, 300), 0.93 - sd3()..=1.0);
+    assert!(low.is_empty(), "{low:?}");
+}
+
+#[test]
+#[ignore = "issue 12 item 1 open: 98.5-99.8 % and 61-83 % measured (module doc)"]
+fn with_two_nearly_dependent_planes_at_one_speed_the_ellipses_hold_93_to_97_percent() {
+    let mut wrong = outside(&cases(&SMALL_RESIDUAL, 300), 0.93 - sd3()..=0.97 + sd3());
+    wrong.extend(outside(
+        &cases(&LARGE_RESIDUAL, 400),
+        0.93 - sd3()..=0.97 + sd3(),
+    ));
+    assert!(wrong.is_empty(), "{wrong:?}");
+}

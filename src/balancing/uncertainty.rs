@@ -37,6 +37,7 @@ use num_complex::Complex64;
 mod apply;
 mod bias;
 mod dof;
+mod ellipse;
 mod propagate;
 mod quantile;
 mod region;

@@ -5,6 +5,7 @@
 use nalgebra::{Matrix2, SymmetricEigen, Vector2};
 use num_complex::Complex64;
 
+use super::ellipse::Ellipse;
 use super::quantile::newton::newton;
 use super::quantile::polar::Polar;
 use super::quantile::quadrature;
@@ -14,11 +15,8 @@ use crate::balancing::solution::Uncertainty;
 
 /// 95 % quantile of χ² with 2 degrees of freedom, `−2 ln 0.05`.
 pub const CHI2_2_95: f64 = 5.991_464_547_107_979;
-/// Samples of the ellipse boundary before refining an extreme of mass or angle.
-const COARSE_POINTS: usize = 24;
-
 /// Eigen-decomposition of a covariance, variances clipped at 0, larger first.
-fn axes(cov: &Matrix2<f64>) -> [(f64, Vector2<f64>); 2] {
+pub(super) fn axes(cov: &Matrix2<f64>) -> [(f64, Vector2<f64>); 2] {
     let sym = (cov + cov.transpose()) / 2.0;
     let e = SymmetricEigen::new(sym);
     let mut ax = [0, 1].map(|i| {
@@ -68,24 +66,25 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
         })
         .sum();
     let (mass, theta) = weight_out(conv, c);
-    let point = boundary(c, &ax, k);
+    let ellipse = Ellipse::new(c, &ax, k);
     let (mass_g, angle_deg) = if d2 <= CHI2_2_95 {
-        ([0.0, extreme(|t| point(t).norm())], [0.0, 360.0])
+        ([0.0, ellipse.farthest()], [0.0, 360.0])
     } else if ax[0].0 == 0.0 {
         ([mass, mass], [theta, theta])
     } else {
         // Angle offset from c's own angle, internal frame (with rotation):
-        // smooth on the boundary, within ±90° as the origin is outside.
-        let offset = |t: f64| (point(t) * c.conj()).arg();
-        let lo = -extreme(|t| -point(t).norm());
-        let hi = extreme(|t| point(t).norm());
-        let (dlo, dhi) = (-extreme(|t| -offset(t)), extreme(offset));
+        // continuous over the ellipse, which holds neither the origin nor
+        // (being convex) any point opposite c.
+        let (dlo, dhi) = ellipse.tangent_offsets();
         let (a, b) = match conv.angle_direction {
             AngleDirection::WithRotation => (dlo, dhi),
             AngleDirection::AgainstRotation => (-dhi, -dlo),
         };
         let lower = wrap_deg(theta + a.to_degrees());
-        ([lo, hi], [lower, lower + (b - a).to_degrees()])
+        (
+            [ellipse.nearest(), ellipse.farthest()],
+            [lower, lower + (b - a).to_degrees()],
+        )
     };
     let off = match conv.angle_direction {
         AngleDirection::WithRotation => cov[(0, 1)],
@@ -96,51 +95,6 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
         angle_deg,
         covariance_g2: [[cov[(0, 0)], off], [off, cov[(1, 1)]]],
     }
-}
-
-/// The point `c + k·L·(cos t, sin t)` of the ellipse boundary, `L Lᵀ = Σ`.
-fn boundary(c: Complex64, ax: &[(f64, Vector2<f64>); 2], k: f64) -> impl Fn(f64) -> Complex64 {
-    let (l1, l2) = (ax[0].0.sqrt() * k, ax[1].0.sqrt() * k);
-    let (v1, v2) = (ax[0].1, ax[1].1);
-    move |t| {
-        let (s, co) = t.sin_cos();
-        let v = v1 * (l1 * co) + v2 * (l2 * s);
-        c + Complex64::new(v.x, v.y)
-    }
-}
-
-/// Maximum of a smooth periodic `f(t)` over `[0, 2π)`: the best of
-/// [`COARSE_POINTS`] samples, refined by golden-section search between its
-/// neighbours (the functions here have at most two local maxima).
-fn extreme(f: impl Fn(f64) -> f64) -> f64 {
-    let step = std::f64::consts::TAU / COARSE_POINTS as f64;
-    let (best, fbest) = (0..COARSE_POINTS)
-        .map(|i| (i as f64 * step, f(i as f64 * step)))
-        .fold(
-            (0.0, f64::NEG_INFINITY),
-            |b, x| if x.1 > b.1 { x } else { b },
-        );
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let (mut a, mut b) = (best - step, best + step);
-    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    // 30 steps shrink the 2-sample bracket (30°) below 1e-6 rad.
-    for _ in 0..30 {
-        if f1 < f2 {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = f(x2);
-        } else {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = f(x1);
-        }
-    }
-    fbest.max(f1).max(f2)
 }
 
 /// The 95 % upper bound of the amplitude `|R|` when `R` is Gaussian with mean

@@ -231,16 +231,35 @@ fn pool_files(
     options: Option<&std::path::Path>,
     max: usize,
 ) -> Result<serde_json::Value, InputError> {
-    let mut sessions = Vec::with_capacity(files.len());
+    // Each session is validated once, here, and pooled as validated. The
+    // files are all read first (the checked sessions borrow them), but an
+    // error is reported for the first file that fails, reading or validation,
+    // as when each file was read and validated in turn.
+    let under = |i: usize| move |e: InputError| e.under(&format!("sessions[{i}]"));
+    let mut parsed = Vec::with_capacity(files.len());
+    let mut unreadable = None;
     for (i, f) in files.iter().enumerate() {
-        let (session, _) = balancing::parse_session_file(&read(f, max)?)
-            .map_err(|e| e.under(&format!("sessions[{i}]")))?;
-        sessions.push((f.display().to_string(), session));
+        match read(f, max).and_then(|bytes| balancing::file::parse(&bytes).map_err(under(i))) {
+            Ok(file) => parsed.push(file),
+            Err(e) => {
+                unreadable = Some(e);
+                break;
+            }
+        }
+    }
+    let mut checked = Vec::with_capacity(parsed.len());
+    for (i, file) in parsed.iter().enumerate() {
+        checked.push(balancing::check_file(file).map_err(under(i))?);
+    }
+    if let Some(e) = unreadable {
+        return Err(e);
     }
     let opts = match options {
         Some(path) => balancing::from_json(&read(path, max)?).map_err(|e| e.under("options"))?,
         None => balancing::job::pool::PoolOptions::default(),
     };
-    let pooled = balancing::job::pool::pool(&sessions, &opts)?;
+    let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let pooled = balancing::job::pool::pool_checked(&names, &checked, &opts)?;
     Ok(serde_json::to_value(pooled).expect("coefficients serialise"))
 }

@@ -57,10 +57,23 @@ pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Sol
                 })?,
         ),
     };
-    let mut solution = match from {
+    // The run checks read the posted session's rows as the solve selected
+    // them: without `from_run` the solve's own (no clone, no second
+    // selection: issue 15); with it the solve ran on the rebased session, so
+    // the posted one is selected here.
+    let (fit, selection);
+    let (mut solution, checked, rows) = match from {
         // The session as posted is validated once, above.
-        None => one_shot::solve_checked(session, checked.clone(), options)?,
-        Some(r) => one_shot::solve(&rebase(session, r), options)?,
+        None => {
+            let solution;
+            (solution, fit) = one_shot::solve_kept(session, checked, options)?;
+            (solution, &fit.checked, &fit.selection.rows)
+        }
+        Some(r) => {
+            let solution = one_shot::solve(&rebase(session, r), options)?;
+            selection = select(&checked, options)?;
+            (solution, &checked, &selection.rows)
+        }
     };
 
     if let Some(r) = from {
@@ -80,14 +93,13 @@ pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Sol
     }
 
     let noise = noise_options(options)?;
-    let rows = select(&checked, options)?.rows;
-    let (run_checks, warnings) = match supplied::resolve(&checked, options)? {
+    let (run_checks, warnings) = match supplied::resolve(checked, options)? {
         Some(s) => {
             // Trials do not estimate W here: their small effect says nothing.
             solution.warnings.retain(|w| w.code != "trial_effect_small");
-            checks::supplied_checks(&checked, &rows, noise, &s.w, &s.cov)
+            checks::supplied_checks(checked, rows, noise, &s.w, &s.cov)
         }
-        None => checks::run_checks(&checked, &rows, noise),
+        None => checks::run_checks(checked, rows, noise),
     };
     solution.warnings.extend(warnings);
     if !run_checks.is_empty() {

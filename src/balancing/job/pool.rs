@@ -22,8 +22,8 @@ use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session, SolveOptions, SuppliedCoefficient};
 use crate::balancing::phasor::reading_out;
 use crate::balancing::solution::Warning;
-use crate::balancing::uncertainty::noise_options;
-use crate::balancing::validate::check;
+use crate::balancing::uncertainty::{noise_options, Noise};
+use crate::balancing::validate::{check, Checked};
 
 /// Options of a pooling.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, ToSchema)]
@@ -65,23 +65,42 @@ pub struct Pooled {
 
 /// Pool the sessions `(id, session)`; errors name `sessions[i]` or `options.…`.
 pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Pooled, InputError> {
-    if sessions.is_empty() {
+    check_options(sessions.len(), options)?;
+    let checked = sessions
+        .iter()
+        .enumerate()
+        .map(|(i, (_, s))| check(s).map_err(|e| e.under(&format!("sessions[{i}]"))))
+        .collect::<Result<Vec<_>, _>>()?;
+    let names: Vec<&str> = sessions.iter().map(|(id, _)| id.as_str()).collect();
+    pool_checked(&names, &checked, options)
+}
+
+/// The errors of [`pool`] that come before the sessions' own: no session,
+/// or bad noise options.
+fn check_options(sessions: usize, options: &PoolOptions) -> Result<Noise, InputError> {
+    if sessions == 0 {
         return Err(InputError::invalid(
             "invalid_value",
             "sessions",
             "list at least one session",
         ));
     }
-    let noise = noise_options(&SolveOptions {
+    noise_options(&SolveOptions {
         amplitude_noise_pct: options.amplitude_noise_pct,
         phase_noise_deg: options.phase_noise_deg,
         ..SolveOptions::default()
-    })?;
-    let checked = sessions
-        .iter()
-        .enumerate()
-        .map(|(i, (_, s))| check(s).map_err(|e| e.under(&format!("sessions[{i}]"))))
-        .collect::<Result<Vec<_>, _>>()?;
+    })
+}
+
+/// [`pool`] of sessions their caller has already validated (`fieldbal
+/// coefficients` validates each file as it reads it), named `names`: each
+/// session is validated once.
+pub fn pool_checked(
+    names: &[&str],
+    checked: &[Checked<'_>],
+    options: &PoolOptions,
+) -> Result<Pooled, InputError> {
+    let noise = check_options(checked.len(), options)?;
     let first = &checked[0];
     let conv = first.conventions;
     // Rows of the first session found in every session: index per session.
@@ -110,7 +129,7 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
         ));
     }
     let mut plane_ids: Vec<String> = Vec::new();
-    for c in &checked {
+    for c in checked {
         for p in &c.session.planes {
             if !plane_ids.contains(&p.id) {
                 plane_ids.push(p.id.clone());
@@ -176,10 +195,10 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
             Source::Estimated(&est),
         ))
     };
-    let mut active: Vec<usize> = (0..sessions.len()).collect();
+    let mut active: Vec<usize> = (0..checked.len()).collect();
     let mut bad: Vec<usize> = Vec::new();
-    let mut results: Vec<Option<linear::Test>> = vec![None; sessions.len()];
-    for _ in 0..sessions.len() {
+    let mut results: Vec<Option<linear::Test>> = vec![None; checked.len()];
+    for _ in 0..checked.len() {
         let round: Vec<(usize, linear::Test)> = active
             .iter()
             .filter_map(|&s| test_one(s, &active).map(|t| (s, t)))
@@ -210,7 +229,7 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
         .enumerate()
         .filter_map(|(s, t)| {
             t.as_ref().map(|t| SessionCheck {
-                session: sessions[s].0.clone(),
+                session: names[s].to_string(),
                 consistent: !bad.contains(&s),
                 chi2: t.chi2,
                 dof: t.dof,
@@ -219,21 +238,18 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
         .collect();
     let mut warnings = Vec::new();
     if !bad.is_empty() {
-        let names: Vec<String> = bad
-            .iter()
-            .map(|&s| format!("'{}'", sessions[s].0))
-            .collect();
+        let quoted: Vec<String> = bad.iter().map(|&s| format!("'{}'", names[s])).collect();
         warnings.push(Warning {
             code: "coefficients_disagree".into(),
             message: format!(
                 "session(s) {} disagree with the coefficients of the other sessions by more than the readings' noise explains: the rotor, its mounting or its speed may have changed, or a weight was typed wrong; pool with options.exclude_disagreeing to leave them out",
-                names.join(", ")
+                quoted.join(", ")
             ),
             plane: None,
         });
     }
     let exclude = options.exclude_disagreeing.unwrap_or(false);
-    let used: Vec<usize> = (0..sessions.len())
+    let used: Vec<usize> = (0..checked.len())
         .filter(|s| !(exclude && bad.contains(s)))
         .collect();
     let set: Vec<usize> = (0..data.trials.len())
@@ -265,10 +281,10 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
     }
     Ok(Pooled {
         conventions: conv,
-        sessions: used.iter().map(|&s| sessions[s].0.clone()).collect(),
-        excluded: (0..sessions.len())
+        sessions: used.iter().map(|&s| names[s].to_string()).collect(),
+        excluded: (0..checked.len())
             .filter(|s| !used.contains(s))
-            .map(|s| sessions[s].0.clone())
+            .map(|s| names[s].to_string())
             .collect(),
         influence_coefficients: coefficients,
         checks: checks_out,

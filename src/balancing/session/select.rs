@@ -1,8 +1,6 @@
 //! Which rows and planes a solve uses, and with what row weights: the
 //! `speeds_rpm`, `sensors`, `planes` and `row_weights` options, checked against the session.
 
-use std::collections::HashSet;
-
 use crate::balancing::error::InputError;
 use crate::balancing::model::SolveOptions;
 use crate::balancing::validate::Checked;
@@ -66,6 +64,15 @@ fn speed_point(checked: &Checked, field: String, speed: f64) -> Result<usize, In
     })
 }
 
+/// `n` flags, set at `on`.
+fn mask(n: usize, on: Vec<usize>) -> Vec<bool> {
+    let mut m = vec![false; n];
+    for i in on {
+        m[i] = true;
+    }
+    m
+}
+
 /// Resolve the options into a selection, naming the offending option field.
 pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, InputError> {
     let session = checked.session;
@@ -89,7 +96,9 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
         }
         None => (0..session.planes.len()).collect(),
     };
-    let sensors: HashSet<usize> = match &options.sensors {
+    // Which sensors and speed points are selected, as masks by index: looked
+    // up for every row (a hash set cost ~400 instructions a row: issue 15).
+    let sensors: Vec<bool> = match &options.sensors {
         Some(list) => {
             let s = ids_to_indices(
                 "options.sensors",
@@ -104,11 +113,11 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
                     "every sensor is excluded: select at least one sensor",
                 ));
             }
-            s.into_iter().collect()
+            mask(session.sensors.len(), s)
         }
-        None => (0..session.sensors.len()).collect(),
+        None => vec![true; session.sensors.len()],
     };
-    let points: HashSet<usize> = match &options.speeds_rpm {
+    let points: Vec<bool> = match &options.speeds_rpm {
         Some(list) => {
             if list.is_empty() {
                 return Err(InputError::invalid(
@@ -117,12 +126,14 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
                     "every speed is excluded: select at least one speed",
                 ));
             }
-            list.iter()
+            let p = list
+                .iter()
                 .enumerate()
                 .map(|(i, &s)| speed_point(checked, format!("options.speeds_rpm[{i}]"), s))
-                .collect::<Result<_, _>>()?
+                .collect::<Result<Vec<_>, _>>()?;
+            mask(checked.points.len(), p)
         }
-        None => (0..checked.points.len()).collect(),
+        None => vec![true; checked.points.len()],
     };
 
     // Row weights multiply the rows they match (contract); checked first, applied below.
@@ -169,7 +180,7 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
     let mut rows = Vec::new();
     let mut weights = Vec::new();
     for (a, row) in checked.rows.iter().enumerate() {
-        if !sensors.contains(&row.sensor) || !points.contains(&row.point) {
+        if !sensors[row.sensor] || !points[row.point] {
             continue;
         }
         let g: f64 = matchers

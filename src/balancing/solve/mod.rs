@@ -12,4 +12,4 @@ pub mod shared_id;
 pub mod solution;
 mod weighted;
 
-pub use weighted::{least_squares, solve, solve_checked, weighted_problem, Fit};
+pub use weighted::{least_squares, solve, solve_checked, solve_kept, weighted_problem, Fit};

@@ -108,6 +108,17 @@ pub fn solve_checked<'a>(
     checked: Checked<'a>,
     options: &SolveOptions,
 ) -> Result<Solution, InputError> {
+    solve_kept(session, checked, options).map(|(solution, _)| solution)
+}
+
+/// [`solve_checked`], giving back the [`Fit`] too: the job layer's run checks
+/// read its validated session and selection instead of cloning the one and
+/// selecting again (issue 15).
+pub fn solve_kept<'a>(
+    session: &'a Session,
+    checked: Checked<'a>,
+    options: &SolveOptions,
+) -> Result<(Solution, Fit<'a>), InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
     let supplied = crate::balancing::job::supplied::resolve(&checked, options)?;
     let (w, t_pinv) = match &supplied {
@@ -213,5 +224,5 @@ pub fn solve_checked<'a>(
     crate::balancing::acceptance::iso::fill(session, &mut solution);
     // Kit weights, jointly over the planes, and the static/couple parts (issue 11).
     crate::balancing::fit::fill(&fit, options, &a, &b, &mut solution)?;
-    Ok(solution)
+    Ok((solution, fit))
 }

@@ -24,7 +24,11 @@ use num_complex::Complex64;
 
 use super::propagate::svd_parts;
 use super::CHI2_2_95;
-use crate::balancing::solve::{weighted_problem, Fit};
+use crate::balancing::solve::Fit;
+
+/// Singular values of `A` at or below this times the largest are left out of
+/// `A⁺`, as in `propagate`.
+const RANK_TOLERANCE: f64 = 1e-10;
 
 /// Smallest degrees of freedom used: `T²` has no 95 % quantile at `ν ≤ 1`.
 const MIN_DOF: f64 = 2.0;
@@ -60,8 +64,11 @@ pub fn degrees_of_freedom(fit: &Fit, cov: &[Vec<Matrix2<f64>>], prior: bool) -> 
     {
         return vec![f64::INFINITY; q];
     }
-    let (a_mat, _) = weighted_problem(checked, &fit.w, sel, &fit.planes);
-    let (apinv, _) = svd_parts(&a_mat);
+    // `A⁺` from the solve's own factorisation of `A = G W` (issue 15: it was
+    // formed and factored again here), at `propagate`'s rank tolerance.
+    let (apinv, _) = fit
+        .factor
+        .pinv_and_gram_inv(RANK_TOLERANCE * fit.factor.max());
     let (tp, _) = svd_parts(&checked.t);
     // λ_k = ω_k·C (+1 for the reference): how reading k of a row moves its residual.
     let lambda: Vec<Complex64> = (0..runs)

@@ -78,6 +78,9 @@ use num_complex::Complex64;
 
 use super::amplitude_95;
 
+mod calibrate;
+pub use calibrate::calibrated_scale;
+
 /// The job's empirical Bayes weight `S = τ̂²/(1 + τ̂²)` of the predictions
 /// (module doc, step 2) from its used rows' predictions `R̂_a` and their
 /// covariances `Σ_v,a`; `dof` the complex degrees of freedom of the fit's
@@ -230,70 +233,6 @@ pub fn weight_sensitivity(
     cross: &Matrix2<f64>,
 ) -> Option<f64> {
     Row::own(Complex64::new(0.0, 0.0), prediction, through_c, cross).sensitivity()
-}
-
-/// Standard normal quantiles at the midpoints of 16 equally likely bins: the
-/// nodes over which step 4 averages the weight's sampling distribution.
-const NODES: [f64; 16] = [
-    -1.862732, -1.318011, -1.009990, -0.776422, -0.579132, -0.402250, -0.237202, -0.078412,
-    0.078412, 0.237202, 0.402250, 0.579132, 0.776422, 1.009990, 1.318011, 1.862732,
-];
-
-/// The covariance scale `f` of the bound calibrated for the scatter of the
-/// estimated weight (step 4, Carlin & Gelfand 1990): `ks` the used rows'
-/// [`weight_sensitivity`], `dof` as [`residual_shrinkage`], `shrink` its
-/// estimate `Ŝ`. With `Ŝ` taken as the truth, the statistic of
-/// [`residual_shrinkage`] is `x* = (1 + τ̂²)·dof·G`, `G ~ Γ(dof, 1)/dof`
-/// (Wilson–Hilferty at [`NODES`]), giving the weight `S*` a job like this one
-/// would estimate. A row's bound at `S*` then has variance `Σ_ε + S* K`
-/// against the true error's `Σ_ε + Ŝ K + (Ŝ − S*)² K / (1 − Ŝ)` (the centre's
-/// shift from `Ŝ − S*`, `R̂` having covariance `Σ_v / (1 − Ŝ)`); in the
-/// central isotropic approximation a bound of variance ratio `ρ` holds
-/// `1 − 0.05^(fρ)`. `f` solves `mean(1 − 0.05^(fρ)) = 0.95` over rows and
-/// nodes (method 8.7; Newton from `f = 1`: `0.05^(fρ)` is convex and
-/// decreasing in `f`, so after the first step it converges from below).
-pub fn calibrated_scale(ks: &[f64], dof: usize, shrink: f64) -> f64 {
-    let s = shrink.clamp(0.0, 1.0);
-    if ks.is_empty() || s >= 1.0 - 1e-9 {
-        return 1.0;
-    }
-    let n = dof.max(1) as f64;
-    let (a, c) = (1.0 - 1.0 / (9.0 * n), (1.0 / (9.0 * n)).sqrt());
-    let weights: [f64; 16] = NODES.map(|z| {
-        let g = (a + c * z).max(0.0).powi(3);
-        let x = g * n / (1.0 - s);
-        if x <= n {
-            0.0
-        } else {
-            1.0 - n / x
-        }
-    });
-    let ln_a = 0.05f64.ln();
-    let ratio = |k: f64, w: f64| (1.0 + w * k) / (1.0 + s * k + (s - w).powi(2) * k / (1.0 - s));
-    // ρ ln 0.05 of every row and node.
-    let rls: Vec<f64> = ks
-        .iter()
-        .flat_map(|&k| weights.map(|w| ratio(k, w) * ln_a))
-        .collect();
-    let count = rls.len() as f64;
-    let mut f = 1.0;
-    for _ in 0..30 {
-        let (mut g, mut dg) = (0.0, 0.0);
-        for &rl in &rls {
-            let e = (f * rl).exp();
-            g += e;
-            dg += rl * e;
-        }
-        let step = (g / count - 0.05) / (dg / count);
-        f = (f - step).max(0.0);
-        if !f.is_finite() {
-            return 1.0;
-        }
-        if step.abs() <= 1e-7 * f {
-            break;
-        }
-    }
-    f
 }
 
 /// `Σ⁺` of a symmetric 2×2 covariance (eigenvalues below 10⁻¹² of the largest

@@ -1,0 +1,184 @@
+//! Checks of single fields (ids, texts, positive numbers, amplitudes, angles)
+//! and of the session's setup: name, rotor, planes and sensors.
+//!
+//! Every check builds its field path only on an error: they run on every
+//! reading of every request (issue 15).
+
+use std::collections::HashMap;
+
+use super::{IdIndex, GRADES, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE};
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Rotor, Session};
+
+const MAX_RADIUS_MM: f64 = 1e5;
+const MAX_TEXT: usize = 200;
+
+pub(super) fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {
+    InputError::invalid("invalid_value", field, message)
+}
+
+fn check_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> {
+    let n = id.chars().count();
+    if n == 0 || n > 64 {
+        return Err(invalid(
+            field(),
+            format!("ids are 1 to 64 characters; this one has {n}"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError> {
+    if required && text.trim().is_empty() {
+        return Err(invalid(field, "must not be empty"));
+    }
+    if text.chars().count() > MAX_TEXT {
+        return Err(invalid(field, format!("at most {MAX_TEXT} characters")));
+    }
+    Ok(())
+}
+
+/// A finite number in `(0, max]` (or `[0, max]` when `zero_ok`).
+pub(super) fn check_positive(
+    field: impl FnOnce() -> String,
+    x: f64,
+    max: f64,
+    zero_ok: bool,
+    what: &str,
+) -> Result<(), InputError> {
+    if !x.is_finite() {
+        return Err(invalid(field(), format!("{what} must be a finite number")));
+    }
+    if x < 0.0 || (x == 0.0 && !zero_ok) {
+        let bound = if zero_ok {
+            "0 or more"
+        } else {
+            "greater than 0"
+        };
+        return Err(invalid(field(), format!("{what} must be {bound}, got {x}")));
+    }
+    if x > max {
+        return Err(invalid(
+            field(),
+            format!("{what} of {x} is beyond the plausible limit of {max}"),
+        ));
+    }
+    Ok(())
+}
+
+/// An amplitude: 0, or from [`MIN_AMPLITUDE`] to [`MAX_AMPLITUDE`].
+pub(super) fn check_amplitude(field: impl Fn() -> String, x: f64) -> Result<(), InputError> {
+    check_positive(&field, x, MAX_AMPLITUDE, true, "the amplitude")?;
+    if x != 0.0 && x < MIN_AMPLITUDE {
+        return Err(invalid(
+            field(),
+            format!("the amplitude {x} is below {MIN_AMPLITUDE} of its unit, which no instrument resolves: give 0 for no vibration, or use a smaller unit"),
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn check_angle(field: impl FnOnce() -> String, x: f64) -> Result<(), InputError> {
+    if !x.is_finite() || x.abs() > MAX_ANGLE_DEG {
+        return Err(invalid(
+            field(),
+            format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Index of an id in a list, checking uniqueness of the list as it goes.
+pub(super) fn unique_ids<'s>(
+    field: &str,
+    ids: impl Iterator<Item = &'s str>,
+) -> Result<HashMap<&'s str, usize>, InputError> {
+    let mut seen = HashMap::new();
+    for (i, id) in ids.enumerate() {
+        // Built only for an error: this runs for every id of every request.
+        let f = || format!("{field}[{i}].id");
+        check_id(f, id)?;
+        if seen.insert(id, i).is_some() {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                f(),
+                format!("the id '{id}' is used twice"),
+            ));
+        }
+    }
+    Ok(seen)
+}
+
+/// The rotor data of a session or a machine (ISO 21940-11 inputs).
+pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
+    check_positive(
+        || "rotor.mass_kg".into(),
+        r.mass_kg,
+        1e7,
+        false,
+        "the rotor mass",
+    )?;
+    check_positive(
+        || "rotor.service_speed_rpm".into(),
+        r.service_speed_rpm,
+        MAX_SPEED_RPM,
+        false,
+        "the service speed",
+    )?;
+    if !GRADES.contains(&r.balance_grade.as_str()) {
+        return Err(invalid(
+            "rotor.balance_grade",
+            format!(
+                "'{}' is not an ISO 21940-11 grade; use one of {}",
+                r.balance_grade,
+                GRADES.join(", ")
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Name, machine, rotor, planes and sensors; the planes' and sensors' id indices.
+pub(super) fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>), InputError> {
+    check_text("name", &session.name, true)?;
+    if let Some(m) = &session.machine {
+        check_text("machine", m, false)?;
+    }
+    if let Some(r) = &session.rotor {
+        check_rotor(r)?;
+    }
+    if session.planes.is_empty() {
+        return Err(invalid("planes", "at least one correction plane is needed"));
+    }
+    let planes = unique_ids("planes", session.planes.iter().map(|p| p.id.as_str()))?;
+    for (i, p) in session.planes.iter().enumerate() {
+        if let Some(r) = p.radius_mm {
+            check_positive(
+                || format!("planes[{i}].radius_mm"),
+                r,
+                MAX_RADIUS_MM,
+                false,
+                "the radius",
+            )?;
+        }
+        if let Some(n) = p.positions {
+            if !(2..=3600).contains(&n) {
+                return Err(invalid(
+                    format!("planes[{i}].positions"),
+                    format!("2 to 3600 fixed places, got {n}"),
+                ));
+            }
+        }
+        crate::balancing::fit::places::check_plane(i, p)?;
+    }
+    if session.sensors.is_empty() {
+        return Err(invalid("sensors", "at least one sensor is needed"));
+    }
+    let sensors = unique_ids("sensors", session.sensors.iter().map(|s| s.id.as_str()))?;
+    for (i, s) in session.sensors.iter().enumerate() {
+        if let Some(l) = &s.label {
+            check_text(&format!("sensors[{i}].label"), l, false)?;
+        }
+    }
+    Ok((planes, sensors))
+}

@@ -1,0 +1,138 @@
+//! Validation: a wire `Session` becomes a `Checked` session whose readings are
+//! paired into rows and turned into internal phasors, or an error naming the field.
+//!
+//! Everything the contract requires is checked here except solvability (the rank
+//! of the trial weights), which `influence` checks when solving, because a stored
+//! session may still be waiting for its trial runs. The checks come in the
+//! contract's order, so the first error reported is always the same one:
+//! sizes, the setup (`fields`), every run's fields (`runs`), then pairing
+//! (`pairing`).
+
+mod fields;
+mod pairing;
+mod runs;
+
+use std::collections::HashMap;
+
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+
+pub use fields::check_rotor;
+
+use crate::balancing::error::InputError;
+use crate::balancing::limits::{check_session, too_large, Limits};
+use crate::balancing::model::{Conventions, Reading, Session};
+use crate::balancing::phasor::weight_in;
+
+/// Speeds closer than this (relative) are the same speed point (contract).
+pub const SPEED_TOLERANCE: f64 = 0.01;
+const MAX_SPEED_RPM: f64 = 1e6;
+const MAX_AMPLITUDE: f64 = 1e9;
+/// Smallest non-zero amplitude: no instrument resolves 1e-9 of its unit, and
+/// far smaller ones (1e-100) underflow when squared twice in the 95 % figures.
+const MIN_AMPLITUDE: f64 = 1e-9;
+const MAX_ANGLE_DEG: f64 = 1e6;
+/// ISO 21940-11 balance grades G, mm/s (method 5.2).
+pub const GRADES: [&str; 11] = [
+    "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",
+];
+
+/// Position of each id in its list.
+type IdIndex<'s> = HashMap<&'s str, usize>;
+
+/// One (speed point, sensor) pair measured in the reference run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// Index into `Checked::points`.
+    pub point: usize,
+    /// Index into `session.sensors`.
+    pub sensor: usize,
+    /// Speed of the reference reading, rpm.
+    pub speed_rpm: f64,
+}
+
+/// A session that passed validation, in the internal frame.
+#[derive(Debug, Clone)]
+pub struct Checked<'a> {
+    pub session: &'a Session,
+    pub conventions: Conventions,
+    /// Speed points: the reference run's speeds, clustered within 1 %, ascending.
+    /// Each point is the list of reference speeds that fall in it.
+    pub points: Vec<Vec<f64>>,
+    /// Rows ordered by speed point, then by sensor as listed in the session.
+    pub rows: Vec<Row>,
+    /// Indices into `session.runs`: the reference run first, then the trial runs in order.
+    pub runs: Vec<usize>,
+    /// Readings, rows × runs (column 0 is the reference `Y0`), internal phasors.
+    pub y: DMatrix<Complex64>,
+    /// Weights, planes × trial runs (`T` of method 2.1), internal frame, grams.
+    pub t: DMatrix<Complex64>,
+    /// For row `a` and run `k` (of `runs`), the index of its reading in
+    /// `session.runs[runs[k]].readings`, at `k × rows + a` (one flat list, not
+    /// a list per row: issue 15).
+    index: Vec<u32>,
+}
+
+impl Checked<'_> {
+    /// The index of the speed point `speed` falls in, if any.
+    pub fn point_of(&self, speed: f64) -> Option<usize> {
+        pairing::nearest_point(&self.points, speed)
+    }
+
+    /// The index in its run's `readings` of the reading of run `k` (index
+    /// into `self.runs`) for row `a`.
+    pub fn reading_index(&self, a: usize, k: usize) -> usize {
+        self.index[k * self.rows.len() + a] as usize
+    }
+
+    /// The reading of run `k` (index into `self.runs`) for row `a`.
+    pub fn reading(&self, a: usize, k: usize) -> &Reading {
+        &self.session.runs[self.runs[k]].readings[self.reading_index(a, k)]
+    }
+}
+
+/// Validate a session and bring it into the internal frame.
+pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
+    // Counts first: nothing below allocates more than the lists' lengths allow.
+    let limits = Limits::current();
+    check_session(session, &limits)?;
+    let conventions = session.conventions.unwrap_or_default();
+    let (planes, sensors) = fields::check_setup(session)?;
+    // Runout vectors (v2), subtracted from the readings when pairing.
+    let runout = crate::balancing::job::runout::vectors(session, conventions)?;
+    fields::unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
+
+    let found = runs::check_runs(session, &planes, &sensors)?;
+    let reference = found.reference;
+    let ref_run = &session.runs[reference];
+    let points = pairing::cluster_speeds(ref_run.readings.iter().map(|r| r.speed_rpm).collect());
+    if points.len() > limits.speed_points {
+        return Err(too_large(
+            format!("runs[{reference}].readings"),
+            "speed points (speeds more than 1 % apart) in the reference run",
+            points.len(),
+            limits.speed_points,
+        ));
+    }
+    let runs: Vec<usize> = std::iter::once(reference)
+        .chain((0..session.runs.len()).filter(|&i| i != reference))
+        .collect();
+    let paired = pairing::pair(session, conventions, &points, &runs, found, &runout)?;
+
+    let mut t = DMatrix::zeros(session.planes.len(), runs.len() - 1);
+    for (k, &i) in runs.iter().enumerate().skip(1) {
+        for w in &session.runs[i].weights {
+            t[(planes[w.plane.as_str()], k - 1)] += weight_in(conventions, w.mass_g, w.angle_deg);
+        }
+    }
+    Ok(Checked {
+        session,
+        conventions,
+        points,
+        rows: paired.rows,
+        runs,
+        y: paired.y,
+        t,
+        index: paired.index,
+    })
+}

@@ -32,30 +32,38 @@ pub(in crate::balancing::uncertainty) fn inside(
     // integrand where h → 0 become smooth ends, so Simpson converges fast; and
     // the derivative's 1/h (from ∂h/∂ρ = ρ/h) cancels against dz₁ = h/σ₁ du.
     let norm = 1.0 / std::f64::consts::TAU.sqrt();
+    if s2 <= 0.0 {
+        // No spread across: |R|² = (μ₁ + σ₁z₁)² + μ₂², so P = Φ(z₊) − Φ(z₋)
+        // with z± = (±w − μ₁)/σ₁, w = √(ρ² − μ₂²), in closed form (Simpson
+        // on the step this is in u was up to 4·10⁻⁵ off; issue 15, session 8).
+        let w2 = rho * rho - mu2 * mu2;
+        if w2.is_nan() || w2 <= 0.0 {
+            return [0.0, 0.0];
+        }
+        let w = w2.sqrt();
+        let (up, down) = ((w - mu1) / s1, (-w - mu1) / s1);
+        let density = ((-0.5 * up * up).exp() + (-0.5 * down * down).exp()) * norm / s1;
+        return [normal_cdf(up) - normal_cdf(down), density * rho / w];
+    }
     let inner = |u: f64| {
         let (sin, cos) = u.sin_cos();
         let z = (rho * sin - mu1) / s1;
         let h = rho * cos;
         let weight = (-0.5 * z * z).exp() * norm / s1;
-        if s2 > 0.0 {
-            let (a, b) = ((h - mu2) / s2, (-h - mu2) / s2);
-            // Both ends beyond 8.5σ₂ (a ≥ b as h ≥ 0): Φ(a) − Φ(b) is exactly 1
-            // or 0 in floating point (Φ(x) = 1.0 from x ≥ 8.3, Φ(−8.5) ≈ 1e-17
-            // vanishes beside 1) and the density terms are below 1e-15 of
-            // their peak; four exponentials saved (issue 15).
-            if b >= TAIL || a <= -TAIL {
-                return [0.0, 0.0];
-            }
-            if a >= TAIL && b <= -TAIL {
-                return [weight * h, 0.0];
-            }
-            let p = normal_cdf(a) - normal_cdf(b);
-            let dp = ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * norm / s2 * rho;
-            [p * weight * h, dp * weight]
-        } else {
-            // No spread across: P steps, P' is a point mass the bracket handles.
-            [f64::from(mu2.abs() <= h) * weight * h, 0.0]
+        let (a, b) = ((h - mu2) / s2, (-h - mu2) / s2);
+        // Both ends beyond 8.5σ₂ (a ≥ b as h ≥ 0): Φ(a) − Φ(b) is exactly 1
+        // or 0 in floating point (Φ(x) = 1.0 from x ≥ 8.3, Φ(−8.5) ≈ 1e-17
+        // vanishes beside 1) and the density terms are below 1e-15 of
+        // their peak; four exponentials saved (issue 15).
+        if b >= TAIL || a <= -TAIL {
+            return [0.0, 0.0];
         }
+        if a >= TAIL && b <= -TAIL {
+            return [weight * h, 0.0];
+        }
+        let p = normal_cdf(a) - normal_cdf(b);
+        let dp = ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * norm / s2 * rho;
+        [p * weight * h, dp * weight]
     };
     let a = ((-rho - mu1) / s1).max(-6.0);
     let b = ((rho - mu1) / s1).min(6.0);
@@ -63,22 +71,33 @@ pub(in crate::balancing::uncertainty) fn inside(
         return [0.0, 0.0];
     }
     let to_u = |z: f64| ((mu1 + s1 * z) / rho).clamp(-1.0, 1.0).asin();
-    // Start from panels of at most two units of z₁: a support narrower than a
-    // panel, which all the panel's nodes could miss, holds under 0.69 of the
-    // probability, so missing it cannot decide whether P reaches 0.95.
-    let panels = ((0.5 * (b - a)).ceil() as usize).max(1);
-    let step = (b - a) / panels as f64;
-    (0..panels)
-        .map(|i| {
-            let lo = a + step * i as f64;
-            simpson(
-                &inner,
-                to_u(lo),
-                to_u(lo + step),
-                TOL / panels as f64,
-                DEPTH,
-            )
-        })
+    // The inner Φ difference turns from 0 to 1 where h crosses |μ₂| ± 8.5σ₂:
+    // for a mass thin across (σ₂ ≪ ρ) a sliver at the ends of the range
+    // that whole panels stepped over, up to 10⁻⁶ off in P before issue 15's
+    // session 8. Those crossings are panel ends.
+    let mut cuts = vec![a, b];
+    for h in [mu2.abs() - TAIL * s2, mu2.abs() + TAIL * s2] {
+        if h > 0.0 && h < rho {
+            let x = (rho * rho - h * h).sqrt();
+            cuts.extend(
+                [(x - mu1) / s1, (-x - mu1) / s1]
+                    .into_iter()
+                    .filter(|z| *z > a && *z < b),
+            );
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    // Between them, panels of at most two units of z₁: a support narrower
+    // than a panel, which all the panel's nodes could miss, holds under 0.69
+    // of the probability, so missing it cannot decide whether P reaches 0.95.
+    let mut ends = vec![a];
+    for w in cuts.windows(2) {
+        let k = ((0.5 * (w[1] - w[0])).ceil() as usize).max(1);
+        ends.extend((1..=k).map(|i| w[0] + (w[1] - w[0]) * i as f64 / k as f64));
+    }
+    let tol = TOL / (ends.len() - 1) as f64;
+    ends.windows(2)
+        .map(|w| simpson(&inner, to_u(w[0]), to_u(w[1]), tol, DEPTH))
         .fold([0.0, 0.0], |acc, v| [acc[0] + v[0], acc[1] + v[1]])
 }
 

@@ -105,18 +105,13 @@ impl ThinSvd {
         if kept.is_empty() {
             return (DMatrix::zeros(q, m), DMatrix::zeros(q, q));
         }
-        // V Σ⁺ and V Σ⁺², only the kept columns.
+        // V Σ⁺, only the kept columns; (AᴴA)⁺ as `gram_inv`.
         let v_s = DMatrix::from_fn(q, kept.len(), |j, c| {
             let (i, s) = kept[c];
             self.v_t[(i, j)].conj() * (1.0 / s)
         });
-        let v_s2 = DMatrix::from_fn(q, kept.len(), |j, c| {
-            let (i, s) = kept[c];
-            self.v_t[(i, j)].conj() * (1.0 / s).powi(2)
-        });
-        let v = DMatrix::from_fn(q, kept.len(), |j, c| self.v_t[(kept[c].0, j)].conj());
         let u = DMatrix::from_fn(m, kept.len(), |a, c| self.u[(a, kept[c].0)]);
-        (v_s * u.adjoint(), v_s2 * v.adjoint())
+        (v_s * u.adjoint(), self.gram_inv(tol))
     }
 }
 

@@ -19,6 +19,7 @@ use crate::db::machines::{
 };
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
+use crate::http::headers::invalid_query;
 use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -82,8 +83,7 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<MachineList>, ApiError> {
-    let Query(params) = params.map_err(crate::http::headers::invalid_query)?;
-    let (limit, offset) = crate::http::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
+    let (limit, offset) = ListParams::bounds(params)?;
     Ok(Json(machines::list(&state.db, limit, offset).await?))
 }
 
@@ -218,8 +218,7 @@ pub async fn get_coefficients(
     Path(id): Path<String>,
     params: Result<Query<VersionParams>, QueryRejection>,
 ) -> Result<Json<StoredCoefficients>, ApiError> {
-    let Query(params) = params
-        .map_err(|r| ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text()))?;
+    let Query(params) = params.map_err(invalid_query)?;
     match machines::coefficients(&state.db, &id, params.version).await? {
         Ok(c) => Ok(Json(c)),
         Err(Missing::Machine) => Err(ApiError::not_found(format!("no machine has the id '{id}'"))),

@@ -37,6 +37,17 @@ pub struct ListParams {
     pub offset: Option<i64>,
 }
 
+impl ListParams {
+    /// `(limit, offset)` of a page of sessions or machines (limit default 50,
+    /// at most 1000), or the contract's error naming the parameter.
+    pub fn bounds(
+        params: Result<Query<ListParams>, QueryRejection>,
+    ) -> Result<(i64, i64), ApiError> {
+        let Query(p) = params.map_err(headers::invalid_query)?;
+        headers::page_bounds(p.limit, p.offset, 50, 1000)
+    }
+}
+
 /// Validate a session to be stored. A session may be stored before any run is
 /// measured (`runs: []`): its set-up is checked and runs are appended later.
 pub fn validate_stored(session: &Session) -> Result<(), InputError> {
@@ -105,8 +116,7 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<SessionList>, ApiError> {
-    let Query(params) = params.map_err(crate::http::headers::invalid_query)?;
-    let (limit, offset) = crate::http::headers::page_bounds(params.limit, params.offset, 50, 1000)?;
+    let (limit, offset) = ListParams::bounds(params)?;
     Ok(Json(db::sessions::list(&state.db, limit, offset).await?))
 }
 

@@ -28,6 +28,11 @@ fn invalid(field: &str, message: impl Into<String>) -> InputError {
     InputError::invalid("invalid_value", field, message)
 }
 
+/// 404 for a machine id in the path that names no machine.
+fn no_machine(id: &str) -> ApiError {
+    ApiError::not_found(format!("no machine has the id '{id}'"))
+}
+
 /// The checks of a posted machine (its rotor as in a session).
 fn validate(m: &NewMachine) -> Result<(), InputError> {
     let n = m.id.chars().count();
@@ -141,7 +146,7 @@ pub async fn pool_coefficients(
     JsonBody(req): JsonBody<PoolRequest>,
 ) -> Result<(StatusCode, Json<StoredCoefficients>), Refused> {
     if !machines::exists(&state.db, &id).await? {
-        return Err(ApiError::not_found(format!("no machine has the id '{id}'")).into());
+        return Err(no_machine(&id).into());
     }
     if req.sessions.is_empty() {
         return Err(invalid("sessions", "list at least one session of this machine").into());
@@ -221,7 +226,7 @@ pub async fn get_coefficients(
     let Query(params) = params.map_err(invalid_query)?;
     match machines::coefficients(&state.db, &id, params.version).await? {
         Ok(c) => Ok(Json(c)),
-        Err(Missing::Machine) => Err(ApiError::not_found(format!("no machine has the id '{id}'"))),
+        Err(Missing::Machine) => Err(no_machine(&id)),
         Err(Missing::Version) => Err(ApiError::not_found(format!(
             "machine '{id}' has no coefficient version {}",
             params.version.unwrap_or_default()

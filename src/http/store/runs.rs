@@ -3,7 +3,7 @@
 
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::{header, HeaderMap, StatusCode};
+use axum::http::{header, HeaderMap};
 use axum::response::{IntoResponse, Response};
 use axum::Json;
 use serde::{Deserialize, Serialize};
@@ -11,12 +11,13 @@ use utoipa::ToSchema;
 
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
-use crate::db::idempotency::{self, Keep};
-use crate::db::{self, RunVersion, StoreError};
+use crate::db::idempotency;
+use crate::db::{self, RunVersion};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, Page};
 use crate::http::sessions::validate_stored;
+use crate::http::store::created::CreatedAnswer;
 use crate::http::AppState;
 
 /// The stored version of a run.
@@ -86,29 +87,16 @@ pub async fn append(
         encode_segment(&id),
         encode_segment(&run.id)
     );
-    let stored = RunStored {
-        run_id: run.id.clone(),
-        version: 1,
+    let created = CreatedAnswer {
+        location,
+        body: RunStored {
+            run_id: run.id.clone(),
+            version: 1,
+        },
     };
-    let keep = idem.as_ref().map(|idem| Keep {
-        idem,
-        status: 201,
-        location: Some(location.clone()),
-        body: serde_json::json!(&stored),
-    });
-    match db::runs::append(&state.db, &id, &run, check_with_run, keep.as_ref()).await {
-        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
-        other => other?,
-    };
-    Ok((
-        StatusCode::CREATED,
-        [
-            (header::LOCATION, location),
-            (header::ETAG, headers::run_etag(1)),
-        ],
-        Json(stored),
-    )
-        .into_response())
+    let keep = created.keep(idem.as_ref());
+    let written = db::runs::append(&state.db, &id, &run, check_with_run, keep.as_ref()).await;
+    created.answer(written, [(header::ETAG, headers::run_etag(1))])
 }
 
 #[utoipa::path(put, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",

@@ -10,11 +10,12 @@ use utoipa::{IntoParams, ToSchema};
 
 use crate::balancing::model::Session;
 use crate::balancing::{self, InputError};
-use crate::db::idempotency::{self, Keep};
-use crate::db::{self, SessionList, StoreError};
+use crate::db::idempotency;
+use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers;
+use crate::http::store::created::CreatedAnswer;
 use crate::http::work::check_blocking;
 use crate::http::AppState;
 
@@ -85,24 +86,13 @@ pub async fn create(
     let readings = session.runs.iter().map(|r| r.readings.len()).sum();
     let session = check_blocking(session, readings, validate_stored).await?;
     let id = uuid::Uuid::new_v4().to_string();
-    let location = format!("/api/v1/sessions/{id}");
-    let created = Created { id };
-    let keep = idem.as_ref().map(|idem| Keep {
-        idem,
-        status: 201,
-        location: Some(location.clone()),
-        body: serde_json::json!(&created),
-    });
-    match db::sessions::create(&state.db, &created.id, &session, keep.as_ref()).await {
-        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
-        other => other?,
-    }
-    Ok((
-        StatusCode::CREATED,
-        [(header::LOCATION, location)],
-        Json(created),
-    )
-        .into_response())
+    let created = CreatedAnswer {
+        location: format!("/api/v1/sessions/{id}"),
+        body: Created { id },
+    };
+    let keep = created.keep(idem.as_ref());
+    let written = db::sessions::create(&state.db, &created.body.id, &session, keep.as_ref()).await;
+    created.answer(written, ())
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions", tag = "sessions",

@@ -40,9 +40,8 @@ pub async fn trial_weights(
     JsonBody(req): JsonBody<TrialRequest>,
 ) -> Result<Json<TrialResponse>, Refused> {
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
-    let conventions = req.session.conventions.unwrap_or_default();
     let options =
-        crate::http::machines::resolve(&state, conventions, req.options, within_solve_request)
+        crate::http::machines::resolve(&state, &req.session, req.options, within_solve_request)
             .await?;
     // Validating and solving the session costs like a solve: off the async
     // threads, in one of the solve slots.

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use crate::balancing::job::pool::{self, PoolOptions, Pooled};
-use crate::balancing::model::{Conventions, SolveOptions};
+use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::InputError;
 use crate::db::machines::{
     self, MachineDetail, MachineList, Missing, NewMachine, StoredCoefficients,
@@ -239,17 +239,19 @@ pub async fn get_coefficients(
 }
 
 /// Resolve a solve's `coefficients_from` into `influence_coefficients` in the
-/// session's conventions, and name the version used. `name_field` puts the
-/// option paths (`options.coefficients_from.…`) in terms of the posted body.
+/// conventions of `session` (the one to be solved), and name the version used.
+/// `name_field` puts the option paths (`options.coefficients_from.…`) in terms
+/// of the posted body.
 pub async fn resolve(
     state: &AppState,
-    conventions: Conventions,
+    session: &Session,
     mut options: SolveOptions,
     name_field: fn(InputError) -> InputError,
 ) -> Result<SolveOptions, ApiError> {
     let Some(from) = options.coefficients_from.clone() else {
         return Ok(options);
     };
+    let conventions = session.conventions.unwrap_or_default();
     let fail = |e: InputError| -> ApiError { name_field(e).into() };
     if options.influence_coefficients.is_some() {
         return Err(fail(InputError::invalid(

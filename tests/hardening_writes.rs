@@ -11,6 +11,20 @@ fn two_plane() -> Value {
     example("pump-two-plane-exact.json")["session"].clone()
 }
 
+/// A server on a fresh database and a client; the directory holds the
+/// database, so keep it for as long as the server runs.
+async fn fresh_server() -> (tempfile::TempDir, common::Server, reqwest::Client) {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    (dir, server, reqwest::Client::new())
+}
+
+/// Store `session` (unkeyed): its id.
+async fn store(client: &reqwest::Client, server: &common::Server, session: &Value) -> String {
+    let (_, _, created) = post(client, &server.url("/api/v1/sessions"), session).await;
+    created["id"].as_str().unwrap().to_string()
+}
+
 async fn post_keyed(
     client: &reqwest::Client,
     url: &str,
@@ -27,9 +41,7 @@ async fn total_sessions(client: &reqwest::Client, server: &common::Server) -> i6
 
 #[tokio::test]
 async fn a_repeated_idempotency_key_answers_the_first_answer_and_stores_nothing_new() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/sessions");
     let session = two_plane();
 
@@ -55,13 +67,10 @@ async fn a_repeated_idempotency_key_answers_the_first_answer_and_stores_nothing_
 
 #[tokio::test]
 async fn runs_and_solutions_posted_twice_with_one_key_are_stored_once() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let mut session = two_plane();
     let last = session["runs"].as_array_mut().unwrap().pop().unwrap();
-    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
-    let id = created["id"].as_str().unwrap();
+    let id = store(&client, &server, &session).await;
 
     let runs_url = server.url(&format!("/api/v1/sessions/{id}/runs"));
     let (s1, _, b1) = post_keyed(&client, &runs_url, "run-key", &last).await;
@@ -82,12 +91,9 @@ async fn runs_and_solutions_posted_twice_with_one_key_are_stored_once() {
 
 #[tokio::test]
 async fn a_put_with_a_stale_if_match_is_refused_with_412() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = two_plane();
-    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
-    let id = created["id"].as_str().unwrap();
+    let id = store(&client, &server, &session).await;
     let run_id = session["runs"][1]["id"].as_str().unwrap();
     let run_url = server.url(&format!("/api/v1/sessions/{id}/runs/{run_id}"));
 
@@ -125,12 +131,9 @@ async fn a_put_with_a_stale_if_match_is_refused_with_412() {
 
 #[tokio::test]
 async fn a_session_etag_changes_when_a_run_is_corrected() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = two_plane();
-    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
-    let id = created["id"].as_str().unwrap();
+    let id = store(&client, &server, &session).await;
     let url = server.url(&format!("/api/v1/sessions/{id}"));
     let (_, h1, _) = send(client.get(&url)).await;
     let (_, h2, _) = send(client.get(&url)).await;
@@ -145,12 +148,9 @@ async fn a_session_etag_changes_when_a_run_is_corrected() {
 
 #[tokio::test]
 async fn versions_and_solutions_are_paged_within_bounds() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = two_plane();
-    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
-    let id = created["id"].as_str().unwrap();
+    let id = store(&client, &server, &session).await;
     let run = session["runs"][1].clone();
     let run_url = server.url(&format!(
         "/api/v1/sessions/{id}/runs/{}",

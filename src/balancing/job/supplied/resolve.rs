@@ -1,0 +1,150 @@
+//! The option `influence_coefficients` read onto the session's rows: each
+//! entry checked, placed at its (sensor, speed point) row and plane, and
+//! brought into the internal frame with its covariance.
+
+use nalgebra::{DMatrix, Matrix2};
+
+use super::Supplied;
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Conventions, PhaseConvention, SolveOptions, SuppliedCoefficient};
+use crate::balancing::phasor::reading_in;
+use crate::balancing::validate::Checked;
+
+const FIELD: &str = "options.influence_coefficients";
+
+/// Flip of the imaginary axis between the session's phase convention and the
+/// internal frame (lag counts phase the other way).
+fn frame(conv: Conventions) -> Matrix2<f64> {
+    match conv.phase {
+        PhaseConvention::Lag => Matrix2::new(1.0, 0.0, 0.0, -1.0),
+        PhaseConvention::Lead => Matrix2::identity(),
+    }
+}
+
+/// A coefficient's covariance from the wire (session's convention) to the
+/// internal frame, or back: the same flip.
+pub fn covariance_frame(conv: Conventions, c: &Matrix2<f64>) -> Matrix2<f64> {
+    let f = frame(conv);
+    f * c * f
+}
+
+fn bad(field: String, message: impl Into<String>) -> InputError {
+    InputError::invalid("invalid_value", field, message)
+}
+
+fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>, InputError> {
+    let f = |x: &str| format!("{FIELD}[{i}].{x}");
+    if !(c.speed_rpm.is_finite() && c.speed_rpm > 0.0) {
+        return Err(bad(
+            f("speed_rpm"),
+            "a speed must be a finite number greater than 0",
+        ));
+    }
+    if !(c.amplitude_per_g.is_finite() && c.amplitude_per_g >= 0.0) {
+        return Err(bad(
+            f("amplitude_per_g"),
+            "must be a finite number, 0 or more",
+        ));
+    }
+    if !(c.phase_deg.is_finite() && c.phase_deg.abs() <= 1e6) {
+        return Err(bad(
+            f("phase_deg"),
+            "an angle in degrees must be finite and within ±1e6",
+        ));
+    }
+    let Some(m) = c.covariance else {
+        return Ok(None);
+    };
+    let m = Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
+    let finite = m.iter().all(|x| x.is_finite());
+    let sym = (m[(0, 1)] - m[(1, 0)]).abs() <= 1e-9 * (m[(0, 0)].abs() + m[(1, 1)].abs());
+    let psd = m[(0, 0)] >= 0.0
+        && m[(1, 1)] >= 0.0
+        && m.determinant() >= -1e-9 * (m[(0, 0)] * m[(1, 1)]).max(f64::MIN_POSITIVE);
+    if !(finite && sym && psd) {
+        return Err(bad(
+            f("covariance"),
+            "a covariance is a symmetric positive semi-definite 2×2 matrix of finite numbers",
+        ));
+    }
+    Ok(Some(m))
+}
+
+/// The supplied coefficients on `checked`'s rows, or `None` without the
+/// option. Every row of the reference run needs a coefficient for every plane
+/// solved for (`options.planes`, or all); coefficients for other speeds or
+/// sensors are ignored.
+pub fn resolve(checked: &Checked, options: &SolveOptions) -> Result<Option<Supplied>, InputError> {
+    let Some(list) = &options.influence_coefficients else {
+        return Ok(None);
+    };
+    let session = checked.session;
+    let conv = checked.conventions;
+    let (n, p) = (checked.rows.len(), session.planes.len());
+    let mut w = DMatrix::zeros(n, p);
+    let mut cov = vec![vec![Matrix2::zeros(); p]; n];
+    let mut given = DMatrix::from_element(n, p, false);
+    for (i, c) in list.iter().enumerate() {
+        let m = check_entry(i, c)?;
+        let Some(s) = session.sensors.iter().position(|s| s.id == c.sensor) else {
+            return Err(InputError::invalid(
+                "unknown_sensor",
+                format!("{FIELD}[{i}].sensor"),
+                format!("the session has no sensor '{}'", c.sensor),
+            ));
+        };
+        let Some(j) = session.planes.iter().position(|pl| pl.id == c.plane) else {
+            return Err(InputError::invalid(
+                "unknown_plane",
+                format!("{FIELD}[{i}].plane"),
+                format!("the session has no plane '{}'", c.plane),
+            ));
+        };
+        let Some(point) = checked.point_of(c.speed_rpm) else {
+            continue;
+        };
+        let Some(a) = checked
+            .rows
+            .iter()
+            .position(|r| r.point == point && r.sensor == s)
+        else {
+            continue;
+        };
+        if given[(a, j)] {
+            return Err(InputError::invalid(
+                "duplicate_coefficient",
+                format!("{FIELD}[{i}]"),
+                format!(
+                    "a coefficient of sensor '{}' at {} rpm for plane '{}' is given twice",
+                    c.sensor, c.speed_rpm, c.plane
+                ),
+            ));
+        }
+        given[(a, j)] = true;
+        w[(a, j)] = reading_in(conv, c.amplitude_per_g, c.phase_deg);
+        cov[a][j] = m.map(|m| covariance_frame(conv, &m)).unwrap_or_default();
+    }
+    let wanted: Vec<usize> = match &options.planes {
+        Some(ids) => session
+            .planes
+            .iter()
+            .enumerate()
+            .filter(|(_, pl)| ids.contains(&pl.id))
+            .map(|(j, _)| j)
+            .collect(),
+        None => (0..p).collect(),
+    };
+    for (a, row) in checked.rows.iter().enumerate() {
+        if let Some(&j) = wanted.iter().find(|&&j| !given[(a, j)]) {
+            return Err(InputError::invalid(
+                "missing_coefficient",
+                FIELD,
+                format!(
+                    "no influence coefficient of sensor '{}' at {} rpm for plane '{}': give one for every sensor and speed of the reference run and every plane solved for",
+                    session.sensors[row.sensor].id, row.speed_rpm, session.planes[j].id
+                ),
+            ));
+        }
+    }
+    Ok(Some(Supplied { w, cov, given }))
+}

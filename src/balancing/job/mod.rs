@@ -58,20 +58,24 @@ pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Sol
         ),
     };
     // The run checks read the posted session's rows as the solve selected
-    // them: without `from_run` the solve's own (no clone, no second
-    // selection: issue 15); with it the solve ran on the rebased session, so
-    // the posted one is selected here.
-    let (fit, selection);
+    // them, with the supplied coefficients it used: without `from_run` the
+    // solve's own (no clone, no second selection, one resolution of the
+    // coefficients: issue 15); with it the solve ran on the rebased session,
+    // whose reference is run `r` (its rows and speeds), so the posted one is
+    // selected and its coefficients resolved here.
+    let (fit, selection, resolved);
     let (mut solution, checked, rows) = match from {
         // The session as posted is validated once, above.
         None => {
+            resolved = supplied::resolve(&checked, options)?;
             let solution;
-            (solution, fit) = one_shot::solve_kept(session, checked, options)?;
+            (solution, fit) = one_shot::solve_kept(session, checked, resolved.as_ref(), options)?;
             (solution, &fit.checked, &fit.selection.rows)
         }
         Some(r) => {
             let solution = one_shot::solve(&rebase(session, r), options)?;
             selection = select(&checked, options)?;
+            resolved = supplied::resolve(&checked, options)?;
             (solution, &checked, &selection.rows)
         }
     };
@@ -93,7 +97,7 @@ pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Sol
     }
 
     let noise = noise_options(options)?;
-    let (run_checks, warnings) = match supplied::resolve(checked, options)? {
+    let (run_checks, warnings) = match &resolved {
         Some(s) => {
             // Trials do not estimate W here: their small effect says nothing.
             solution.warnings.retain(|w| w.code != "trial_effect_small");

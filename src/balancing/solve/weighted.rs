@@ -8,6 +8,7 @@ use crate::balancing::diagnostics::{significance_factors, SIGNIFICANCE_THRESHOLD
 use crate::balancing::error::InputError;
 use crate::balancing::factor::{Factored, ThinSvd};
 use crate::balancing::influence::influence_and_pinv;
+use crate::balancing::job::supplied::Supplied;
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::report;
 use crate::balancing::select::{select, Selection};
@@ -108,20 +109,23 @@ pub fn solve_checked<'a>(
     checked: Checked<'a>,
     options: &SolveOptions,
 ) -> Result<Solution, InputError> {
-    solve_kept(session, checked, options).map(|(solution, _)| solution)
+    let supplied = crate::balancing::job::supplied::resolve(&checked, options)?;
+    solve_kept(session, checked, supplied.as_ref(), options).map(|(solution, _)| solution)
 }
 
 /// [`solve_checked`], giving back the [`Fit`] too: the job layer's run checks
 /// read its validated session and selection instead of cloning the one and
-/// selecting again (issue 15).
+/// selecting again (issue 15). `supplied` is `job::supplied::resolve(&checked,
+/// options)`, resolved by the caller so that its run checks read the same
+/// coefficients without resolving them a second time.
 pub fn solve_kept<'a>(
     session: &'a Session,
     checked: Checked<'a>,
+    supplied: Option<&Supplied>,
     options: &SolveOptions,
 ) -> Result<(Solution, Fit<'a>), InputError> {
     // Supplied or stored coefficients (v2) replace the estimate from trial runs.
-    let supplied = crate::balancing::job::supplied::resolve(&checked, options)?;
-    let (w, t_pinv) = match &supplied {
+    let (w, t_pinv) = match supplied {
         Some(s) => (s.w.clone(), None),
         None => {
             let (w, t_pinv) = influence_and_pinv(&checked)?;
@@ -185,7 +189,7 @@ pub fn solve_kept<'a>(
     let (c, warnings) = correction(&a, &b, &factor, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);
     // Errors-in-variables bias removed where the noise is evidenced (issue 12).
-    let c = match &supplied {
+    let c = match supplied {
         None => uncertainty::debiased(
             &checked,
             &cov,
@@ -216,7 +220,7 @@ pub fn solve_kept<'a>(
     let mut solution = report::solution(&fit, options);
     solution.warnings.extend(warnings);
     // Confidence regions from reading noise (issue 6), after the method's warnings.
-    match &supplied {
+    match supplied {
         None => uncertainty::fill(&fit, options, &cov, &mut solution),
         Some(s) => crate::balancing::job::supplied::fill(&fit, s, options, noise, &mut solution),
     }

@@ -71,9 +71,13 @@ pub async fn solve(
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
-    let options =
-        crate::http::machines::resolve(&state, &req.session, req.options, within_solve_request)
-            .await?;
+    let options = crate::http::store::coefficients_from::resolve(
+        &state,
+        &req.session,
+        req.options,
+        within_solve_request,
+    )
+    .await?;
     Ok(Json(
         solve_blocking(&state, req.session, options, within_solve_request).await?,
     ))
@@ -104,8 +108,13 @@ pub async fn create_solution(
         return Ok(headers::replay(r));
     }
     let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
-    let resolved =
-        crate::http::machines::resolve(&state, &session, options.clone(), within_options).await?;
+    let resolved = crate::http::store::coefficients_from::resolve(
+        &state,
+        &session,
+        options.clone(),
+        within_options,
+    )
+    .await?;
     let solution = solve_blocking(&state, session, resolved, within_options).await?;
     let stored = match db::solutions::store(
         &state.db,

@@ -40,9 +40,13 @@ pub async fn trial_weights(
     JsonBody(req): JsonBody<TrialRequest>,
 ) -> Result<Json<TrialResponse>, Refused> {
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
-    let options =
-        crate::http::machines::resolve(&state, &req.session, req.options, within_solve_request)
-            .await?;
+    let options = crate::http::store::coefficients_from::resolve(
+        &state,
+        &req.session,
+        req.options,
+        within_solve_request,
+    )
+    .await?;
     // Validating and solving the session costs like a solve: off the async
     // threads, in one of the solve slots.
     let session = req.session;

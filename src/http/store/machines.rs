@@ -1,7 +1,7 @@
 //! `/api/v1/machines` (v2 "Machines"): create, list, read (with sessions and
 //! coefficient versions) and delete machines; pool sessions into a new
-//! coefficient version and read versions back; and resolve a solve's
-//! `coefficients_from` into supplied coefficients.
+//! coefficient version and read versions back. A solve's `coefficients_from`
+//! is read in `coefficients_from.rs`.
 
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -11,8 +11,7 @@ use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use crate::balancing::job::pool::{self, PoolOptions, Pooled};
-use crate::balancing::model::{Session, SolveOptions};
+use crate::balancing::job::pool::{self, PoolOptions};
 use crate::balancing::InputError;
 use crate::db::machines::{
     self, MachineDetail, MachineList, Missing, NewMachine, StoredCoefficients,
@@ -236,72 +235,6 @@ pub async fn get_coefficients(
             "machine '{id}' has no stored coefficients yet: POST /api/v1/machines/{id}/coefficients"
         ))),
     }
-}
-
-/// Resolve a solve's `coefficients_from` into `influence_coefficients` in the
-/// conventions of `session` (the one to be solved), and name the version used.
-/// `name_field` puts the option paths (`options.coefficients_from.…`) in terms
-/// of the posted body.
-pub async fn resolve(
-    state: &AppState,
-    session: &Session,
-    mut options: SolveOptions,
-    name_field: fn(InputError) -> InputError,
-) -> Result<SolveOptions, ApiError> {
-    let Some(from) = options.coefficients_from.clone() else {
-        return Ok(options);
-    };
-    let conventions = session.conventions.unwrap_or_default();
-    let fail = |e: InputError| -> ApiError { name_field(e).into() };
-    if options.influence_coefficients.is_some() {
-        return Err(fail(InputError::invalid(
-            "conflicting_options",
-            "options.influence_coefficients",
-            "give influence_coefficients or coefficients_from, not both",
-        )));
-    }
-    let stored = match machines::coefficients(&state.db, &from.machine, from.version).await? {
-        Ok(s) => s,
-        Err(Missing::Machine) => {
-            return Err(fail(InputError::invalid(
-                "unknown_machine",
-                "options.coefficients_from.machine",
-                format!("no machine has the id '{}'", from.machine),
-            )))
-        }
-        Err(Missing::Version) => {
-            return Err(fail(InputError::invalid(
-                "unknown_version",
-                "options.coefficients_from.version",
-                format!(
-                    "machine '{}' has no coefficient version {}",
-                    from.machine,
-                    from.version.unwrap_or_default()
-                ),
-            )))
-        }
-        Err(Missing::NoVersions) => {
-            return Err(fail(InputError::invalid(
-                "unknown_version",
-                "options.coefficients_from.machine",
-                format!("machine '{}' has no stored coefficients yet", from.machine),
-            )))
-        }
-    };
-    let mut body = stored.body.clone();
-    body.insert("sessions".into(), serde_json::json!(stored.sessions));
-    let pooled: Pooled = serde_json::from_value(serde_json::Value::Object(body))
-        .map_err(|e| ApiError::internal(&e))?;
-    options.influence_coefficients = Some(pool::convert(
-        &pooled.influence_coefficients,
-        pooled.conventions,
-        conventions,
-    ));
-    options.coefficients_from = Some(crate::balancing::model::CoefficientsFrom {
-        machine: from.machine,
-        version: Some(stored.version),
-    });
-    Ok(options)
 }
 
 // Objects only: a positional array is refused (see `balancing::wire`).

@@ -1,0 +1,77 @@
+//! A solve's `coefficients_from` (v2 "Coefficients supplied or stored"): a
+//! machine's stored coefficient version read from the database and put into
+//! the options as `influence_coefficients`, for `POST /api/v1/solve`, a stored
+//! session's solutions and trial weights.
+
+use crate::balancing::job::pool::{self, Pooled};
+use crate::balancing::model::{Session, SolveOptions};
+use crate::balancing::InputError;
+use crate::db::machines::{self, Missing};
+use crate::http::error::ApiError;
+use crate::http::AppState;
+
+/// Resolve a solve's `coefficients_from` into `influence_coefficients` in the
+/// conventions of `session` (the one to be solved), and name the version used.
+/// `name_field` puts the option paths (`options.coefficients_from.…`) in terms
+/// of the posted body.
+pub async fn resolve(
+    state: &AppState,
+    session: &Session,
+    mut options: SolveOptions,
+    name_field: fn(InputError) -> InputError,
+) -> Result<SolveOptions, ApiError> {
+    let Some(from) = options.coefficients_from.clone() else {
+        return Ok(options);
+    };
+    let conventions = session.conventions.unwrap_or_default();
+    let fail = |e: InputError| -> ApiError { name_field(e).into() };
+    if options.influence_coefficients.is_some() {
+        return Err(fail(InputError::invalid(
+            "conflicting_options",
+            "options.influence_coefficients",
+            "give influence_coefficients or coefficients_from, not both",
+        )));
+    }
+    let stored = match machines::coefficients(&state.db, &from.machine, from.version).await? {
+        Ok(s) => s,
+        Err(Missing::Machine) => {
+            return Err(fail(InputError::invalid(
+                "unknown_machine",
+                "options.coefficients_from.machine",
+                format!("no machine has the id '{}'", from.machine),
+            )))
+        }
+        Err(Missing::Version) => {
+            return Err(fail(InputError::invalid(
+                "unknown_version",
+                "options.coefficients_from.version",
+                format!(
+                    "machine '{}' has no coefficient version {}",
+                    from.machine,
+                    from.version.unwrap_or_default()
+                ),
+            )))
+        }
+        Err(Missing::NoVersions) => {
+            return Err(fail(InputError::invalid(
+                "unknown_version",
+                "options.coefficients_from.machine",
+                format!("machine '{}' has no stored coefficients yet", from.machine),
+            )))
+        }
+    };
+    let mut body = stored.body.clone();
+    body.insert("sessions".into(), serde_json::json!(stored.sessions));
+    let pooled: Pooled = serde_json::from_value(serde_json::Value::Object(body))
+        .map_err(|e| ApiError::internal(&e))?;
+    options.influence_coefficients = Some(pool::convert(
+        &pooled.influence_coefficients,
+        pooled.conventions,
+        conventions,
+    ));
+    options.coefficients_from = Some(crate::balancing::model::CoefficientsFrom {
+        machine: from.machine,
+        version: Some(stored.version),
+    });
+    Ok(options)
+}

@@ -13,6 +13,7 @@ use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::{JsonBody, OptionsBody};
 use crate::http::headers::{self, Page};
+use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
 
@@ -71,13 +72,8 @@ pub async fn solve(
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
-    let options = crate::http::store::coefficients_from::resolve(
-        &state,
-        &req.session,
-        req.options,
-        within_solve_request,
-    )
-    .await?;
+    let options =
+        coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;
     Ok(Json(
         solve_blocking(&state, req.session, options, within_solve_request).await?,
     ))
@@ -108,13 +104,8 @@ pub async fn create_solution(
         return Ok(headers::replay(r));
     }
     let (session, solved) = db::solutions::load_for_solve(&state.db, &id).await?;
-    let resolved = crate::http::store::coefficients_from::resolve(
-        &state,
-        &session,
-        options.clone(),
-        within_options,
-    )
-    .await?;
+    let resolved =
+        coefficients_from::resolve(&state, &session, options.clone(), within_options).await?;
     let solution = solve_blocking(&state, session, resolved, within_options).await?;
     let stored = match db::solutions::store(
         &state.db,

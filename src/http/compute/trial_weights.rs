@@ -8,6 +8,7 @@ use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
 use crate::http::solve::within_solve_request;
+use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
 
@@ -40,13 +41,8 @@ pub async fn trial_weights(
     JsonBody(req): JsonBody<TrialRequest>,
 ) -> Result<Json<TrialResponse>, Refused> {
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
-    let options = crate::http::store::coefficients_from::resolve(
-        &state,
-        &req.session,
-        req.options,
-        within_solve_request,
-    )
-    .await?;
+    let options =
+        coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;
     // Validating and solving the session costs like a solve: off the async
     // threads, in one of the solve slots.
     let session = req.session;

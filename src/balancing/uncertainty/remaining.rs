@@ -72,6 +72,18 @@
 //! exact to first order but undershoots there (92.1–94.7 %): the
 //! coefficients' own noise times the correction's error, left out, is not
 //! small beside the conditional spread (method §8, "All rows at once").
+//!
+//! Session 9 (measured, not adopted; method 8.9): that product term, split
+//! into the part along the row's own error (whose size the prediction shows)
+//! and the rest, with the rows' own covariances in (8.8) taken at the true
+//! `C` (`D(Ĉ)` holds the term already: why (8.8) needed nothing more at one
+//! speed), brings ten speeds to 94.2–95.6 % in every case of eiv.rs and
+//! leaves one speed about as it is (92.6–96.0 %). It costs a QR of the
+//! whitened `2 rows × 2q` stack and `O(q²)` per row (9.1 M instructions for
+//! the QR alone on the large job, whose least-squares solve is 48.7 M),
+//! where issue 15 allows `O(rows · q)` here; and with the weight forced to 0
+//! it still holds only 87–92 % at ten speeds, the pooled weight making up
+//! the rest. The code is on branch `amp-joint2`.
 
 use nalgebra::{Matrix2, Vector2};
 use num_complex::Complex64;

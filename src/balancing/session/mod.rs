@@ -11,4 +11,5 @@ pub mod limits;
 pub mod model;
 pub mod phasor;
 pub mod select;
+pub mod trig;
 pub mod validate;

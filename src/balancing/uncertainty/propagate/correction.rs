@@ -57,7 +57,13 @@ pub(super) fn sums(
     // Not the normal equations: `AᴴA` is never formed, and with the SVD of
     // `R + δR` backward stable, `(R̃ᴴR̃)⁻¹ Rᴴ = R̃⁻¹ (I − R̃⁻ᴴ δRᴴ)` is `A⁺`
     // within `ε κ ‖A⁺‖`, the accuracy of `R̃⁻¹ Qᴴ` itself.
-    let neg_ah_g = DMatrix::from_fn(q, m, |j, i| -amat[(i, j)].conj() * row_weights[i]);
+    // Entry (j, i) = −conj(A_ij) g_i, written in storage order (session 9).
+    let ams = amat.as_slice();
+    let mut data = Vec::with_capacity(q * m);
+    for (i, &g) in row_weights.iter().enumerate().take(m) {
+        data.extend((0..q).map(|j| -ams[i + j * m].conj() * g));
+    }
+    let neg_ah_g = DMatrix::from_vec(q, m, data);
     let a_vec = cmul(gram_inv, &neg_ah_g);
     let b_vec: Vec<Complex64> = (0..m).map(|i| -r[i] * row_weights[i]).collect();
     let xi = DMatrix::from_fn(q, runs, |j, k| g_omega[k][j]);
@@ -107,14 +113,35 @@ pub(super) fn sums(
         }
         let px = &pp * xy.columns(0, 2 * q);
         let sy = &sm * xy.columns(2 * q, 2 * q);
-        mk = DMatrix::from_fn(m, q, |i, j| {
-            let re = px[(i, j)] - px[(m + i, q + j)];
-            let im = px[(i, q + j)] + px[(m + i, j)];
-            b_vec[i].conj() * Complex64::new(re, im)
-        });
-        mj = DMatrix::from_fn(m, q, |i, j| {
-            b_vec[i] * Complex64::new(sy[(i, j)], sy[(i, q + j)])
-        });
+        // Column by column through the storage slices (issue 15, session 9):
+        // column j of `px` is [Re P x_j; Im P x_j], column q + j the same
+        // with Im x_j.
+        let (pxs, sys) = (px.as_slice(), sy.as_slice());
+        let mut data = Vec::with_capacity(m * q);
+        for j in 0..q {
+            let (re_re, im_re) = pxs[2 * m * j..2 * m * (j + 1)].split_at(m);
+            let (re_im, im_im) = pxs[2 * m * (q + j)..2 * m * (q + j + 1)].split_at(m);
+            data.extend(
+                re_re
+                    .iter()
+                    .zip(im_im)
+                    .zip(re_im.iter().zip(im_re))
+                    .zip(&b_vec)
+                    .map(|(((rr, ii), (ri, ir)), b)| b.conj() * Complex64::new(rr - ii, ri + ir)),
+            );
+        }
+        mk = DMatrix::from_vec(m, q, data);
+        let mut data = Vec::with_capacity(m * q);
+        for j in 0..q {
+            let (re, im) = (&sys[m * j..m * (j + 1)], &sys[m * (q + j)..m * (q + j + 1)]);
+            data.extend(
+                re.iter()
+                    .zip(im)
+                    .zip(&b_vec)
+                    .map(|((&re, &im), b)| b * Complex64::new(re, im)),
+            );
+        }
+        mj = DMatrix::from_vec(m, q, data);
         let xi_scaled = |d: &[f64]| {
             let mut x = xi.clone();
             for (k, mut col) in x.column_iter_mut().enumerate() {
@@ -127,15 +154,31 @@ pub(super) fn sums(
         // instead of three (issue 15). diag(s1) is real and diag(p1) enters
         // a symmetric form, so halving it on both sides is exact. Both in
         // one product `a [mk | mj]`.
-        let mut mkj = DMatrix::from_element(m, 2 * q, zero);
-        for i in 0..m {
-            let (half_s, half_p) = (s1[i] * 0.5, p1[i] * 0.5);
-            for j in 0..q {
-                let aij = a_vec[(j, i)];
-                mkj[(i, j)] = mk[(i, j)] + half_s * aij.conj();
-                mkj[(i, q + j)] = mj[(i, j)] + half_p * aij;
-            }
+        // Written once, a column at a time, through the storage slices
+        // (issue 15, session 9: zeros then a fill through nalgebra's `(i, j)`
+        // indexing cost 0.9 M instructions on 20,480 × 2 entries). Entry
+        // (j, i) of `a` is at `j + i q`.
+        let avs = a_vec.as_slice();
+        let mut data = Vec::with_capacity(m * 2 * q);
+        for (j, col) in mk.as_slice().chunks_exact(m.max(1)).enumerate() {
+            let aj = avs[j..].iter().step_by(q);
+            data.extend(
+                col.iter()
+                    .zip(&s1)
+                    .zip(aj)
+                    .map(|((&v, &s), a)| v + (s * 0.5) * a.conj()),
+            );
         }
+        for (j, col) in mj.as_slice().chunks_exact(m.max(1)).enumerate() {
+            let aj = avs[j..].iter().step_by(q);
+            data.extend(
+                col.iter()
+                    .zip(&p1)
+                    .zip(aj)
+                    .map(|((&v, &p), a)| v + (p * 0.5) * a),
+            );
+        }
+        let mkj = DMatrix::from_vec(m, 2 * q, data);
         let akj = cmul(&a_vec, &mkj);
         let (ak, aj) = (akj.columns(0, q), akj.columns(q, q));
         let xs = xi_scaled(&s2);

@@ -34,7 +34,10 @@ fn arg_is_libm_atan2_within_a_few_ulps() {
             "atan2({y:e}, {x:e}): {fast} against {libm}"
         );
     }
-    eprintln!("arg: worst {:.2e} absolute, {:.2e} relative", worst.0, worst.1);
+    eprintln!(
+        "arg: worst {:.2e} absolute, {:.2e} relative",
+        worst.0, worst.1
+    );
 }
 
 #[test]

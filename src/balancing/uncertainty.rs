@@ -45,7 +45,7 @@ mod remaining;
 mod trust;
 
 pub use apply::{fill, noise_options, reading_covariances, Noise, SNR_THRESHOLD};
-pub use bias::{bias, debiased};
+pub use bias::debiased;
 pub use propagate::{propagate, Propagation};
 pub use region::{amplitude_95, correction_uncertainty, normal_cdf, CHI2_2_95};
 pub use remaining::{

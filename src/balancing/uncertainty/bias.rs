@@ -78,7 +78,8 @@ struct Expansion {
 
 impl Expansion {
     /// `None` when the weighted problem is rank deficient (no unique
-    /// correction to correct) or square (see [`bias`]).
+    /// correction to correct) or square (no residual, so no bias: the
+    /// hat-matrix factor `1 − P_ii` of the module doc is zero).
     fn new(
         t: &DMatrix<Complex64>,
         y: &DMatrix<Complex64>,
@@ -181,21 +182,6 @@ impl Expansion {
         let inner = &self.omega_bar * coef_omega + self.a.adjoint() * coef_a;
         -(&self.h_inv * inner)
     }
-}
-
-/// The second-order bias `E[Ĉ − C]` of the least-squares correction `c`
-/// (same arguments as [`super::propagate`]), or `None` when the weighted
-/// problem is rank deficient (no unique correction to correct) or square.
-pub fn bias(
-    t: &DMatrix<Complex64>,
-    y: &DMatrix<Complex64>,
-    cov: &[Vec<Matrix2<f64>>],
-    used_rows: &[usize],
-    row_weights: &[f64],
-    used_planes: &[usize],
-    c: &DVector<Complex64>,
-) -> Option<DVector<Complex64>> {
-    Expansion::new(t, y, cov, used_rows, row_weights, used_planes).map(|x| x.at(c))
 }
 
 /// The correction `c` of the used `rows` (with `weights`) and `planes`, less

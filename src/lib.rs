@@ -16,3 +16,17 @@ pub mod cli;
 pub mod db;
 pub mod http;
 pub mod identification;
+
+/// The allocator of every binary that links fieldbal: the service, the CLI,
+/// the tests and the benches alike (issue 15). glibc's malloc gives the
+/// pages of a large solve back to the kernel when it ends (its trim and
+/// mmap thresholds) and takes them again in the next: on the large
+/// least-squares job (16 planes × 32 sensors × 40 speeds) 800 page faults a
+/// solve, a fifth of its time in the kernel (criterion: 10.2 ms with 1.2 s
+/// of system time in 5.8 s, against 7.7 ms and 0.02 s with the thresholds
+/// raised). mimalloc keeps freed pages for reuse: 7.6 ms, no answer changed
+/// (the JSON of `fieldbal solve` on `benches/data/` is byte for byte the
+/// same). Peak memory grows (44 MB against 20 MB on that job, 94 MB against
+/// 67 MB on the 267-plane one, BENCHMARKS.md), under issue 15's 200 MB.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;

@@ -83,7 +83,9 @@
 //! the QR alone on the large job, whose least-squares solve is 48.7 M),
 //! where issue 15 allows `O(rows · q)` here; and with the weight forced to 0
 //! it still holds only 87–92 % at ten speeds, the pooled weight making up
-//! the rest. The code is kept as docs/experiments/issue12-amp-joint2.patch.
+//! the rest. The code is kept as docs/experiments/issue12-amp-joint2.patch;
+//! session 10 rebuilt it as a module (docs/experiments/issue12-amp-joint3.patch,
+//! method §8: +13.5 M instructions on the large job, not adopted).
 
 use nalgebra::{Matrix2, Vector2};
 use num_complex::Complex64;

@@ -7,26 +7,16 @@ mod job_support;
 
 use fieldbal::balancing::job::pool::{pool, PoolOptions};
 use fieldbal::balancing::model::Conventions;
-use fieldbal::balancing::phasor::{angle_diff_deg, reading_out, weight_out};
+use fieldbal::balancing::phasor::{angle_diff_deg, weight_out};
 use fieldbal::balancing::Session;
 use job_support::*;
 use serde_json::{json, Value};
 
 /// The rotor's exact coefficients as the option lists them, in `conv`.
 fn exact_coefficients(rotor: &Rotor, conv: Conventions, sd: Option<f64>) -> Value {
-    let mut out = Vec::new();
-    for a in 0..4 {
-        for (j, p) in PLANES.iter().enumerate() {
-            let (amp, phase) = reading_out(conv, rotor.w[(a, j)]);
-            let mut c = json!({"speed_rpm": SPEEDS[a / 2], "sensor": SENSORS[a % 2], "plane": p,
-                               "amplitude_per_g": amp, "phase_deg": phase});
-            if let Some(sd) = sd {
-                c["covariance"] = json!([[sd * sd, 0.0], [0.0, sd * sd]]);
-            }
-            out.push(c);
-        }
-    }
-    Value::Array(out)
+    supplied(&rotor.w, conv, |_, _| {
+        sd.map(|sd| [[sd * sd, 0.0], [0.0, sd * sd]])
+    })
 }
 
 /// A reference run and trials (one per plane, or none), from `rotor`.

@@ -221,3 +221,26 @@ pub fn typed(conv: Conventions, j: usize, w: Complex64) -> (usize, f64, f64) {
 pub fn phasor(conv: Conventions, amplitude: f64, phase: f64) -> Complex64 {
     reading_in(conv, amplitude, phase)
 }
+
+/// Coefficients `w` (rows × planes, internal frame) as the option
+/// `influence_coefficients` lists them, in `conv`; `cov(row, plane)` gives a
+/// coefficient's covariance (wire frame, (unit/g)²) or none.
+pub fn supplied(
+    w: &DMatrix<Complex64>,
+    conv: Conventions,
+    cov: impl Fn(usize, usize) -> Option<[[f64; 2]; 2]>,
+) -> Value {
+    let mut out = Vec::new();
+    for a in 0..w.nrows() {
+        for (j, p) in PLANES.iter().enumerate() {
+            let (amp, phase) = reading_out(conv, w[(a, j)]);
+            let mut c = json!({"speed_rpm": SPEEDS[a / 2], "sensor": SENSORS[a % 2], "plane": p,
+                               "amplitude_per_g": amp, "phase_deg": phase});
+            if let Some(m) = cov(a, j) {
+                c["covariance"] = json!(m);
+            }
+            out.push(c);
+        }
+    }
+    Value::Array(out)
+}

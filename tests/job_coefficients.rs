@@ -21,18 +21,10 @@ fn exact_coefficients(rotor: &Rotor, conv: Conventions, sd: Option<f64>) -> Valu
 
 /// A reference run and trials (one per plane, or none), from `rotor`.
 fn runs(rotor: &Rotor, conv: Conventions, trials: bool, noise: &mut Noise) -> Vec<Value> {
+    let mut r = opening_runs(rotor, conv, trials, noise);
     if !trials {
-        return vec![run(
-            rotor,
-            conv,
-            "zero",
-            &vec![],
-            &vec![],
-            noise,
-            &NO_RUNOUT,
-        )];
+        return r;
     }
-    let mut r = first_runs(rotor, conv, noise, &NO_RUNOUT, 0.0);
     r.push(run(
         rotor,
         conv,

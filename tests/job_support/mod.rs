@@ -244,3 +244,24 @@ pub fn supplied(
     }
     Value::Array(out)
 }
+
+/// The zero run and, if `trials`, one trial per plane ([`first_runs`], no typo).
+pub fn opening_runs(
+    rotor: &Rotor,
+    conv: Conventions,
+    trials: bool,
+    noise: &mut Noise,
+) -> Vec<Value> {
+    if trials {
+        return first_runs(rotor, conv, noise, &NO_RUNOUT, 0.0);
+    }
+    vec![run(
+        rotor,
+        conv,
+        "zero",
+        &vec![],
+        &vec![],
+        noise,
+        &NO_RUNOUT,
+    )]
+}

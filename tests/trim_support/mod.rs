@@ -24,19 +24,7 @@ pub fn on_weights(rotor: &Rotor, conv: Conventions) -> Weights {
 /// The reference run, the trials of job_support if `trials`, and run "check".
 pub fn trim_session(rotor: &Rotor, conv: Conventions, trials: bool) -> Value {
     let mut n = Noise::none();
-    let mut runs = if trials {
-        first_runs(rotor, conv, &mut n, &NO_RUNOUT, 0.0)
-    } else {
-        vec![run(
-            rotor,
-            conv,
-            "zero",
-            &vec![],
-            &vec![],
-            &mut n,
-            &NO_RUNOUT,
-        )]
-    };
+    let mut runs = opening_runs(rotor, conv, trials, &mut n);
     let on = on_weights(rotor, conv);
     runs.push(run(rotor, conv, "check", &on, &on, &mut n, &NO_RUNOUT));
     session(conv, runs)

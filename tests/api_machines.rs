@@ -19,20 +19,7 @@ fn job_session(rotor: &Rotor, machine: &str, trials: bool, seed: u64) -> Value {
     } else {
         Noise::new(1.0, 1.0, seed)
     };
-    let runs = if trials {
-        first_runs(rotor, conv, &mut n, &NO_RUNOUT, 0.0)
-    } else {
-        vec![run(
-            rotor,
-            conv,
-            "zero",
-            &vec![],
-            &vec![],
-            &mut n,
-            &NO_RUNOUT,
-        )]
-    };
-    let mut s = session(conv, runs);
+    let mut s = session(conv, opening_runs(rotor, conv, trials, &mut n));
     s["machine"] = json!(machine);
     s
 }

@@ -17,22 +17,13 @@ Not run by CI (NumPy is not a dependency). Usage:
 """
 import json, subprocess, sys, numpy as np
 
+from rotor_model import heldout_w
+
 BIN = sys.argv[1]
 R = int(sys.argv[2]) if len(sys.argv) > 2 else 200
 rng = np.random.default_rng(12345)
-zp = np.array([0.2, 0.5, 0.8]); zs = np.array([0.05, 0.05, 0.95, 0.95])
-aniso = np.array([1.0, 1.18, 1.0, 1.12])
-wk = np.array([1500.0, 2800.0, 5200.0]); zk = np.array([0.03, 0.05, 0.08])
-phi = lambda k, z: np.sin((k + 1) * np.pi * (z + 0.1) / 1.2)
-
-def W(speed, zcols):
-    out = np.zeros((4, len(zcols)), complex)
-    for s in range(4):
-        for j, z in enumerate(zcols):
-            for k in range(3):
-                w = wk[k] * aniso[s]
-                out[s, j] += phi(k, zs[s]) * phi(k, z) * speed**2 / (w**2 - speed**2 + 2j * zk[k] * w * speed)
-    return out * 0.8  # um per g
+zp = np.array([0.2, 0.5, 0.8])
+W = heldout_w  # the rotor, scripts/rotor_model.py
 
 def case(speeds, effect, noise_pct=2.0, noise_deg=2.0, samples=False):
     Wx = np.vstack([W(sp, zp) for sp in speeds])

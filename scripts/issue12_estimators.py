@@ -20,30 +20,11 @@ import sys
 
 import numpy as np
 
-NODES=7; PLANES=[0,3,6]; SENSORS=[1,2,4,5]
-BEARINGS=[(1,8.0e6,2.5e3),(5,3.0e6,1.5e3)]
-MASS=15.0; BEND=2.7e7; LOSS=0.02; RAD=0.1
+from rotor_model import flexible
+
+PLANES=[0,3,6]; SENSORS=[1,2,4,5]
 def response(speeds):
-    k=np.zeros((NODES,NODES))
-    for i in range(NODES-2):
-        d=[(i,1.0),(i+1,-2.0),(i+2,1.0)]
-        for a,x in d:
-            for b,y in d: k[a,b]+=BEND*x*y
-    u0=np.array([m*np.exp(1j*a) for m,a in [(60,.3),(25,2.),(40,4.1),(80,1.1),(30,5.5),(45,3.),(70,.9)]])
-    rows=len(speeds)*len(SENSORS)
-    w=np.zeros((rows,len(PLANES)),complex); y0=np.zeros(rows,complex)
-    for p,rpm in enumerate(speeds):
-        om=rpm*2*np.pi/60
-        z=k*(1+1j*LOSS)-om*om*MASS*np.eye(NODES)
-        for node,kb,cb in BEARINGS: z[node,node]+=kb+1j*om*cb
-        sol=lambda u: np.linalg.solve(z,u*om*om)*1e6
-        x0=sol(u0*1e-9)
-        for s,node in enumerate(SENSORS): y0[p*4+s]=x0[node]
-        for j,pl in enumerate(PLANES):
-            u=np.zeros(NODES,complex); u[pl]=1e-3*RAD
-            x=sol(u)
-            for s,node in enumerate(SENSORS): w[p*4+s,j]=x[node]
-    return w,y0
+    return flexible(speeds, PLANES, SENSORS)
 def rotor(speeds,effect):
     w,y0=response(speeds)
     c=-np.linalg.lstsq(w,y0,rcond=None)[0]

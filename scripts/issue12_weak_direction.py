@@ -47,6 +47,8 @@ Usage: python3 scripts/issue12_weak_direction.py [calibration realisations]
 import sys
 import numpy as np
 
+from rotor_model import heldout_w
+
 K95 = 5.991464547107979  # χ²₂ 95 %
 K6 = 12.591587243743977  # χ²₆ 95 %
 
@@ -78,19 +80,8 @@ def test_rotor(planes, effect, rpm=3000.0):
 
 def heldout(effect, speed=3000.0):
     """scripts/coverage_heldout.py's rotor at one speed (P0, P2 nearly dependent)."""
-    zp = np.array([0.2, 0.5, 0.8]); zs = np.array([0.05, 0.05, 0.95, 0.95])
-    aniso = np.array([1.0, 1.18, 1.0, 1.12])
-    wk = np.array([1500.0, 2800.0, 5200.0]); zk = np.array([0.03, 0.05, 0.08])
-    phi = lambda k, z: np.sin((k + 1) * np.pi * (z + 0.1) / 1.2)
-
-    def Wf(zcols):
-        out = np.zeros((4, len(zcols)), complex)
-        for s in range(4):
-            for j, z in enumerate(zcols):
-                for k in range(3):
-                    w = wk[k] * aniso[s]
-                    out[s, j] += phi(k, zs[s]) * phi(k, z) * speed**2 / (w**2 - speed**2 + 2j * zk[k] * w * speed)
-        return out * 0.8
+    zp = np.array([0.2, 0.5, 0.8])
+    Wf = lambda zcols: heldout_w(speed, zcols)
     W, We = Wf(zp), Wf([0.35, 0.65])
     Y0 = W @ (50 * np.exp(1j * np.array([0.3, 2.1, 4.0]))) + We @ (15 * np.exp(1j * np.array([1.0, 5.0])))
     ystd = np.sqrt(np.mean(np.abs(Y0) ** 2))

@@ -26,7 +26,10 @@ pub mod identification;
 /// of system time in 5.8 s, against 7.7 ms and 0.02 s with the thresholds
 /// raised). mimalloc keeps freed pages for reuse: 7.6 ms, no answer changed
 /// (the JSON of `fieldbal solve` on `benches/data/` is byte for byte the
-/// same). Peak memory grows (44 MB against 20 MB on that job, 94 MB against
-/// 67 MB on the 267-plane one, BENCHMARKS.md), under issue 15's 200 MB.
+/// same). A one-shot `fieldbal solve` peaks higher (46 MB against 21 MB on
+/// that job, 95 MB against 69 MB on the 267-plane one: mimalloc's transparent
+/// huge pages, `MIMALLOC_ALLOW_THP=0` turns them off), under issue 15's
+/// 200 MB; the worst accepted requests to the service peak at 175 MiB
+/// (BENCHMARKS.md, "Issue 15, session 10").
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;

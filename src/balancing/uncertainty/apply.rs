@@ -181,18 +181,34 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             .map(|&a| (fit.residual[a], &prop.prediction[a])),
         dof,
     );
-    // Each row's conditioning on its own prediction (method 8.6), once per
-    // row for the calibration and the bound alike (issue 15).
-    let rows: Vec<Row> = (0..fit.residual.len())
-        .map(|a| {
-            Row::own(
-                fit.residual[a],
-                &prop.prediction[a],
-                &prop.through_correction[a],
-                &prop.remaining_cross[a],
-            )
-        })
-        .collect();
+    // Each row conditioned on all the used rows' predictions (method 8.8,
+    // 8.9); with one complex degree of freedom over the planes (nothing more
+    // to learn from the other rows), or where that cannot be formed, on its
+    // own (8.6). Once per row for the calibration and the bound alike
+    // (issue 15).
+    let joint = super::remaining::joint::Inputs {
+        w: &fit.w,
+        planes: &fit.planes,
+        used_rows: &sel.rows,
+        c: &fit.c,
+        r_hat: &fit.residual,
+        own: &prop.residual,
+        correction_full: &prop.correction_full,
+        t_pinv: fit.t_pinv.as_ref(),
+        cov,
+    };
+    let rows: Vec<Row> = super::remaining::joint::rows(&joint).unwrap_or_else(|| {
+        (0..fit.residual.len())
+            .map(|a| {
+                Row::own(
+                    fit.residual[a],
+                    &prop.prediction[a],
+                    &prop.through_correction[a],
+                    &prop.remaining_cross[a],
+                )
+            })
+            .collect()
+    });
     // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
     let ks: Vec<f64> = sel
         .rows

@@ -67,25 +67,25 @@
 //! than half. On the tests' rotor at ten speeds the rows' errors also grow
 //! with the job's pooled residual (the conditioning uses each row's own
 //! prediction, and the rows share `dC`), which the calibration does not see:
-//! 96.8–97.6 % there (BENCHMARKS.md, issue 12 session 6). Conditioning on
-//! all the rows' predictions at once (method 8.8, tried in session 7) is
-//! exact to first order but undershoots there (92.1–94.7 %): the
-//! coefficients' own noise times the correction's error, left out, is not
-//! small beside the conditional spread (method §8, "All rows at once").
+//! 96.8–97.6 % there with each row conditioned on its own (BENCHMARKS.md,
+//! issue 12 session 6).
 //!
-//! Session 9 (measured, not adopted; method 8.9): that product term, split
-//! into the part along the row's own error (whose size the prediction shows)
-//! and the rest, with the rows' own covariances in (8.8) taken at the true
-//! `C` (`D(Ĉ)` holds the term already: why (8.8) needed nothing more at one
-//! speed), brings ten speeds to 94.2–95.6 % in every case of eiv.rs and
-//! leaves one speed about as it is (92.6–96.0 %). It costs a QR of the
-//! whitened `2 rows × 2q` stack and `O(q²)` per row (9.1 M instructions for
-//! the QR alone on the large job, whose least-squares solve is 48.7 M),
-//! where issue 15 allows `O(rows · q)` here; and with the weight forced to 0
-//! it still holds only 87–92 % at ten speeds, the pooled weight making up
-//! the rest. The code is kept as docs/experiments/issue12-amp-joint2.patch;
-//! session 10 rebuilt it as a module (docs/experiments/issue12-amp-joint3.patch,
-//! method §8: +13.5 M instructions on the large job, not adopted).
+//! So each row is conditioned on all the used rows' predictions at once
+//! (method 8.8), with the coefficients' noise times the correction's error
+//! split along the row's own error (method 8.9): [`joint`] (session 11; the
+//! form of sessions 9 and 10, rebuilt at about a third of their cost). The
+//! bound keeps steps 2–4 with its `m`, `Σ_ε`, `K`. Measured on eiv.rs (400
+//! realisations, trials 10/20/30/100 %): ten speeds 95.1/94.2/94.7/94.8 %
+//! stated, 95.6/95.0/95.2/94.2 % samples (each row on its own:
+//! 95.3/96.8/97.0/97.3 % and 95.4/96.9/97.6/97.1 %); on the held-out rotor
+//! (scripts/coverage_heldout.py) ten speeds 95.1–96.1 % (each row on its
+//! own: 94.8–98.2 %). With rows only one more than the planes (one speed)
+//! the other rows tell nothing the row's own prediction does not (first
+//! order), and each row is conditioned on its own ([`joint`]'s doc gives
+//! both forms' figures there). Open: with the weight forced to 0 the
+//! ten-speed bound conditioned on all rows holds only 87–92 %, the pooled
+//! weight and its calibration making up the rest (method §8, "All rows at
+//! once").
 
 use nalgebra::{Matrix2, Vector2};
 use num_complex::Complex64;
@@ -93,6 +93,8 @@ use num_complex::Complex64;
 use super::amplitude_95;
 
 mod calibrate;
+pub mod joint;
+mod mgs;
 pub use calibrate::calibrated_scale;
 
 /// The job's empirical Bayes weight `S = τ̂²/(1 + τ̂²)` of the predictions

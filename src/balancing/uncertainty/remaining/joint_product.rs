@@ -1,0 +1,129 @@
+//! The product term of method 8.9 for `joint` (module doc there): what the
+//! coefficients' noise times the correction's error adds to each row's
+//! bound, as real quadratic forms over the runs for all rows at once.
+
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+
+use super::Inputs;
+
+/// Complex `E[x xᴴ]` (`q × q`) of a real `2q × 2q` covariance of
+/// `(Re x₀, Im x₀, Re x₁, …)`.
+pub fn hermitian_part(full: &DMatrix<f64>) -> DMatrix<Complex64> {
+    let q = full.nrows() / 2;
+    DMatrix::from_fn(q, q, |j, l| {
+        let (xj, yj, xl, yl) = (2 * j, 2 * j + 1, 2 * l, 2 * l + 1);
+        Complex64::new(
+            full[(xj, xl)] + full[(yj, yl)],
+            full[(yj, xl)] - full[(xj, yl)],
+        )
+    })
+}
+
+/// The product term's ingredients (module doc): `Ω` (runs × q, row `k` is
+/// `ω_k`: `−1ᵀT⁺` for the reference run, `T⁺`'s row otherwise), `λ_k`, the
+/// readings' `s_ak = tr S_ak` (rows × runs), `E|z_a|²`, `V_e,a`, and `K`.
+pub struct Second {
+    omega: DMatrix<Complex64>,
+    lambda: Vec<Complex64>,
+    s: DMatrix<f64>,
+    pub ez: Vec<f64>,
+    ve: Vec<f64>,
+    /// `Ω K Ωᴴ`.
+    h: DMatrix<Complex64>,
+}
+
+impl Second {
+    pub fn of(tp: &DMatrix<Complex64>, inp: &Inputs) -> Second {
+        let (n, q, runs) = (inp.w.nrows(), inp.planes.len(), tp.nrows() + 1);
+        let omega = DMatrix::from_fn(runs, q, |k, j| match k {
+            0 => -tp.column(inp.planes[j]).sum(),
+            _ => tp[(k - 1, inp.planes[j])],
+        });
+        let lambda: Vec<Complex64> = (0..runs)
+            .map(|k| {
+                omega
+                    .row(k)
+                    .iter()
+                    .zip(inp.c.iter())
+                    .map(|(o, c)| o * c)
+                    .sum::<Complex64>()
+                    + if k == 0 { 1.0 } else { 0.0 }
+            })
+            .collect();
+        let k_mat = hermitian_part(inp.correction_full);
+        let h = &omega * &k_mat * omega.adjoint();
+        let h_cond_free = h.clone();
+        let mut s = Vec::with_capacity(n * runs);
+        for k in 0..runs {
+            s.extend(inp.cov.iter().map(|row| row[k].trace()));
+        }
+        let s = DMatrix::from_vec(n, runs, s);
+        let (mut ez, mut ve) = (vec![0.0; n], vec![0.0; n]);
+        for (k, col) in s.as_slice().chunks_exact(n).enumerate() {
+            let (mk, lk) = (h[(k, k)].re, lambda[k].norm_sqr());
+            for ((e, v), &sk) in ez.iter_mut().zip(ve.iter_mut()).zip(col) {
+                *e += sk * mk;
+                *v += sk * lk;
+            }
+        }
+        Second {
+            omega,
+            lambda,
+            s,
+            ez,
+            ve,
+            h: h_cond_free,
+        }
+    }
+
+    /// Per row: `E|ζ_a|² + |R̂_a − m_a|² Var(β | v)` (method 8.9), `l_inv`
+    /// the conditional covariance `Λ⁻¹`.
+    pub fn added(
+        &self,
+        l_inv: &DMatrix<f64>,
+        r_hat: &DVector<Complex64>,
+        centre: &[Complex64],
+    ) -> Vec<f64> {
+        let runs = self.lambda.len();
+        // H̃_kl = Re(λ̄_k (Ω K Ωᴴ)_kl λ_l), then the same with Λ⁻¹.
+        let mut ht = DMatrix::<f64>::zeros(runs, 2 * runs);
+        let h_cond = &self.omega * hermitian_part(l_inv) * self.omega.adjoint();
+        for (half, h) in [&self.h, &h_cond].into_iter().enumerate() {
+            for kk in 0..runs {
+                for l in 0..runs {
+                    ht[(kk, half * runs + l)] =
+                        (self.lambda[kk].conj() * h[(kk, l)] * self.lambda[l]).re;
+                }
+            }
+        }
+        let t = &self.s * ht;
+        let n = self.s.nrows();
+        // Σ_k s_ak T_ak for both halves, run by run over contiguous columns.
+        let (mut b2, mut var) = (vec![0.0; n], vec![0.0; n]);
+        let (t1, t2) = t.as_slice().split_at(runs * n);
+        let columns = self.s.as_slice().chunks_exact(n);
+        for ((s, t1), t2) in columns.zip(t1.chunks_exact(n)).zip(t2.chunks_exact(n)) {
+            for (((b, v), s), (x, y)) in b2
+                .iter_mut()
+                .zip(var.iter_mut())
+                .zip(s)
+                .zip(t1.iter().zip(t2))
+            {
+                *b += s * x;
+                *v += s * y;
+            }
+        }
+        (0..n)
+            .map(|a| {
+                let ve = self.ve[a];
+                if ve.is_nan() || ve <= 0.0 {
+                    return 0.0;
+                }
+                let unexplained = (self.ez[a] - b2[a] / ve).max(0.0);
+                let e_hat = (r_hat[a] - centre[a]).norm_sqr();
+                unexplained + e_hat * (var[a] / (ve * ve)).max(0.0)
+            })
+            .collect()
+    }
+}

@@ -67,7 +67,10 @@ FIGURES (400 realisations; trials 10/20/30/100 %; `table 400 [samples]`):
   eiv2 (2 QRs): stated ten 95.2 96.2 96.4 96.5, one 97.4 96.3 96.4 96.2;
                 samples ten 93.5 94.2 94.1 94.3, one 97.8 96.7 95.9 95.2.
   cluster sd of eiv-E: ten 7–12 %, one 10–12 % (a job's rows move together).
-FAST_FIGURES
+  `fast 400` (stated, trials 10/30/100 %): 3 QRs + chord = eiv-E to 10⁻⁷ at
+  ten speeds, 96.3 96.5 96.5; one speed 97.5 96.4 96.2 (the chord steps,
+  median 8–13, do not always converge at one speed within 50: centre off by
+  up to 0.19 relative); 2 QRs + chord: ten 95.3 96.4 96.5, one 96.4 95.9 96.1.
 
 Not explained: the oracle 'eivC' (true C, exact row law) over-covers by
 1–2 % at ten speeds 10–20 % and one speed 10–20 % although its standardised

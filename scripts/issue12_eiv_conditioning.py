@@ -74,9 +74,12 @@ FIGURES (400 realisations; trials 10/20/30/100 %; `table 400 [samples]`):
 
 Not explained: the oracle 'eivC' (true C, exact row law) over-covers by
 1–2 % at ten speeds 10–20 % and one speed 10–20 % although its standardised
-error has mean square 2.02–2.04 (ten) — light tails from Ĉ's dependence on
-the row's own coefficient error (a synthetic Gaussian truth with the same
-mean/cov: 95.3–95.6 %; leave-the-row-out dC in P_a: no change).
+error has mean square 2.02–2.04 (ten): its tails are lighter than Gaussian.
+Measured: a synthetic Gaussian truth with the same mean/cov holds 95.3–95.6 %,
+one with the row's W̃ error drawn afresh (same dC) 95.7 %, so it comes from
+Ĉ's dependence on the row's own coefficient error; but the leave-the-row-out
+dC in P_a changes nothing and no linear shift towards the centre or R̂ shows
+(explained variance < 2 %): the mechanism is not pinned down.
 
     nice -n 10 python3 scripts/issue12_eiv_conditioning.py ten 0.3 400 [samples]
     nice -n 10 python3 scripts/issue12_eiv_conditioning.py table 400 [samples]  # ~5 min

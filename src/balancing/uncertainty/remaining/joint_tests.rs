@@ -42,6 +42,45 @@ fn inv_sqrt(s: &Matrix2<f64>) -> Matrix2<f64> {
     out
 }
 
+/// Every row and plane used, `C = 0`, no supplied coefficients: the setting
+/// of the linear Gaussian tests below.
+struct AllUsed {
+    planes: Vec<usize>,
+    used: Vec<usize>,
+    c: DVector<Complex64>,
+    full: DMatrix<f64>,
+}
+
+impl AllUsed {
+    fn new(n: usize, q: usize) -> AllUsed {
+        AllUsed {
+            planes: (0..q).collect(),
+            used: (0..n).collect(),
+            c: DVector::zeros(q),
+            full: DMatrix::zeros(2 * q, 2 * q),
+        }
+    }
+
+    fn inputs<'a>(
+        &'a self,
+        w: &'a DMatrix<Complex64>,
+        r_hat: &'a DVector<Complex64>,
+        own: &'a [Matrix2<f64>],
+    ) -> Inputs<'a> {
+        Inputs {
+            w,
+            planes: &self.planes,
+            used_rows: &self.used,
+            c: &self.c,
+            r_hat,
+            own,
+            correction_full: &self.full,
+            t_pinv: None,
+            cov: &[],
+        }
+    }
+}
+
 #[test]
 fn the_products_equal_the_per_row_reference_form() {
     let mut rng = StdRng::seed_from_u64(5);
@@ -172,11 +211,8 @@ fn in_the_linear_gaussian_model_the_bound_conditioned_on_all_rows_holds_95_perce
         .map(|a| spd(&mut rng, 0.02 * (1.0 + a as f64)))
         .collect();
     let chol: Vec<Matrix2<f64>> = own.iter().map(|d| d.cholesky().unwrap().l()).collect();
-    let planes: Vec<usize> = (0..q).collect();
-    let used: Vec<usize> = (0..n).collect();
+    let fixture = AllUsed::new(n, q);
     let pinv = w.clone().svd(true, true).pseudo_inverse(1e-12).unwrap();
-    let c = DVector::zeros(q);
-    let full = DMatrix::zeros(2 * q, 2 * q);
     let (mut held, mut checks) = (0usize, 0usize);
     for _ in 0..2000 {
         let e = DVector::from_fn(n, |a, _| {
@@ -189,18 +225,7 @@ fn in_the_linear_gaussian_model_the_bound_conditioned_on_all_rows_holds_95_perce
         });
         let dc = -(&pinv * &e);
         let v = &e + &w * &dc;
-        let inp = Inputs {
-            w: &w,
-            planes: &planes,
-            used_rows: &used,
-            c: &c,
-            r_hat: &v,
-            own: &own,
-            correction_full: &full,
-            t_pinv: None,
-            cov: &[],
-        };
-        let rows = rows(&inp).expect("formed");
+        let rows = rows(&fixture.inputs(&w, &v, &own)).expect("formed");
         let truth = &w * &dc;
         for (a, row) in rows.iter().enumerate() {
             let bound = row.amplitude_95(v[a], Pooled::plug_in(0.0));
@@ -223,21 +248,12 @@ fn with_one_degree_of_freedom_over_the_planes_each_row_is_left_to_itself() {
     for (n, formed) in [(4, false), (5, true)] {
         let w = DMatrix::from_fn(n, q, |_, _| cx(&mut rng));
         let own: Vec<Matrix2<f64>> = (0..n).map(|_| spd(&mut rng, 0.05)).collect();
-        let planes: Vec<usize> = (0..q).collect();
-        let used: Vec<usize> = (0..n).collect();
-        let (c, v) = (DVector::zeros(q), DVector::from_fn(n, |_, _| cx(&mut rng)));
-        let full = DMatrix::zeros(2 * q, 2 * q);
-        let inp = Inputs {
-            w: &w,
-            planes: &planes,
-            used_rows: &used,
-            c: &c,
-            r_hat: &v,
-            own: &own,
-            correction_full: &full,
-            t_pinv: None,
-            cov: &[],
-        };
-        assert_eq!(rows(&inp).is_some(), formed, "{n} rows");
+        let v = DVector::from_fn(n, |_, _| cx(&mut rng));
+        let fixture = AllUsed::new(n, q);
+        assert_eq!(
+            rows(&fixture.inputs(&w, &v, &own)).is_some(),
+            formed,
+            "{n} rows"
+        );
     }
 }

@@ -67,7 +67,7 @@ use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 use num_complex::Complex64;
 
 use super::mgs::{qr_in_place, squares_and_neighbours};
-use super::Row;
+use super::{sym, Row};
 
 #[path = "joint_product.rs"]
 mod product;
@@ -148,7 +148,8 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
     if !top.is_finite() || top <= 0.0 || r.diagonal().iter().any(|d| d.abs() <= 1e-10 * top) {
         return None;
     }
-    let r_inv = upper_inverse(&r);
+    // The diagonal was checked nonzero above.
+    let r_inv = r.solve_upper_triangular(&DMatrix::identity(nn, nn))?;
     let mc = &r_inv * qty;
     // The used rows' leverages `H_b = Q_b Q_bᵀ` (2 × 2) from `Q`'s columns:
     // `W_b R⁻¹ = L_b Q_b`, so `Σ_ε,b = W_b Λ⁻¹ W_bᵀ = L_b H_b L_bᵀ` without
@@ -196,10 +197,6 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
     Some(out)
 }
 
-fn sym(m: &Matrix2<f64>) -> Matrix2<f64> {
-    (m + m.transpose()) * 0.5
-}
-
 /// `L⁻¹` of `D = L Lᵀ` (Cholesky) as `[l⁻¹₁₁, l⁻¹₂₁, l⁻¹₂₂]`; `None` when
 /// `D` is singular to 10⁻¹² of its trace or not finite.
 fn chol_inv(d: &Matrix2<f64>) -> Option<[f64; 3]> {
@@ -226,21 +223,6 @@ fn unused_row(inp: &Inputs, a: usize, r_inv: &DMatrix<f64>) -> (f64, f64, f64) {
     }
     let (p0, p1) = (r_inv.tr_mul(&w0), r_inv.tr_mul(&w1));
     (p0.dot(&p0), p0.dot(&p1), p1.dot(&p1))
-}
-
-/// `R⁻¹` of an upper triangular `R` with a nonzero diagonal (back
-/// substitution, column by column).
-fn upper_inverse(r: &DMatrix<f64>) -> DMatrix<f64> {
-    let n = r.nrows();
-    let mut inv = DMatrix::zeros(n, n);
-    for j in 0..n {
-        inv[(j, j)] = 1.0 / r[(j, j)];
-        for i in (0..j).rev() {
-            let s: f64 = (i + 1..=j).map(|k| r[(i, k)] * inv[(k, j)]).sum();
-            inv[(i, j)] = -s / r[(i, i)];
-        }
-    }
-    inv
 }
 
 #[cfg(test)]

@@ -8,12 +8,10 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
 
-/// Reference form (what `propagate` reads off its products, issue 15): real covariance of `Σ_j w_j C_j` from the joint real covariance of the
-/// corrections (`2q × 2q`, ordered Re C₀, Im C₀, Re C₁, …).
-fn through_correction(w: &[Complex64], full: &DMatrix<f64>) -> Matrix2<f64> {
-    // Jacobian rows: Re(w C) = Re w·x − Im w·y, Im(w C) = Im w·x + Re w·y.
-    let q = w.len();
-    let jac = |o: usize, col: usize| {
+/// The real 2 × 2q map of a complex row `w` acting on `(Re C₀, Im C₀, Re C₁, …)`:
+/// `Re(w C) = Re w·x − Im w·y`, `Im(w C) = Im w·x + Re w·y` (also `joint`'s tests).
+pub(super) fn real_row(w: &[Complex64]) -> DMatrix<f64> {
+    DMatrix::from_fn(2, 2 * w.len(), |o, col| {
         let z = w[col / 2];
         match (o, col % 2) {
             (0, 0) => z.re,
@@ -21,24 +19,15 @@ fn through_correction(w: &[Complex64], full: &DMatrix<f64>) -> Matrix2<f64> {
             (_, 0) => z.im,
             _ => z.re,
         }
-    };
-    let mut out = Matrix2::zeros();
-    for o in 0..2 {
-        for p in 0..2 {
-            let mut s = 0.0;
-            for i in 0..2 * q {
-                let ji = jac(o, i);
-                if ji == 0.0 {
-                    continue;
-                }
-                for k in 0..2 * q {
-                    s += ji * full[(i, k)] * jac(p, k);
-                }
-            }
-            out[(o, p)] = s;
-        }
-    }
-    out
+    })
+}
+
+/// Reference form (what `propagate` reads off its products, issue 15): real covariance of `Σ_j w_j C_j` from the joint real covariance of the
+/// corrections (`2q × 2q`, ordered Re C₀, Im C₀, Re C₁, …).
+fn through_correction(w: &[Complex64], full: &DMatrix<f64>) -> Matrix2<f64> {
+    let jac = real_row(w);
+    let out = &jac * full * jac.transpose();
+    Matrix2::from_fn(|o, p| out[(o, p)])
 }
 
 #[test]

@@ -3,6 +3,7 @@
 //! stack, two triangular solves and a `q`-vector `g_a` per row), and in the
 //! linear Gaussian model the bound conditioned on all rows holds 95 %.
 
+use super::super::tests::real_row;
 use super::super::Pooled;
 use super::product::hermitian_part;
 use super::*;
@@ -18,18 +19,6 @@ fn spd(rng: &mut StdRng, scale: f64) -> Matrix2<f64> {
     let mut u = || rng.gen::<f64>();
     let a = Matrix2::new(u(), u(), u(), u());
     (a * a.transpose() + Matrix2::identity() * 0.2) * scale
-}
-
-fn real_row(w: &[Complex64]) -> DMatrix<f64> {
-    DMatrix::from_fn(2, 2 * w.len(), |o, col| {
-        let z = w[col / 2];
-        match (o, col % 2) {
-            (0, 0) => z.re,
-            (0, _) => -z.im,
-            (_, 0) => z.im,
-            _ => z.re,
-        }
-    })
 }
 
 fn inv_sqrt(s: &Matrix2<f64>) -> Matrix2<f64> {

@@ -53,7 +53,6 @@ impl Second {
             .collect();
         let k_mat = hermitian_part(inp.correction_full);
         let h = &omega * &k_mat * omega.adjoint();
-        let h_cond_free = h.clone();
         let mut s = Vec::with_capacity(n * runs);
         for k in 0..runs {
             s.extend(inp.cov.iter().map(|row| row[k].trace()));
@@ -73,7 +72,7 @@ impl Second {
             s,
             ez,
             ve,
-            h: h_cond_free,
+            h,
         }
     }
 

@@ -15,60 +15,28 @@ ellipses hold 99.3-99.8 % there (BENCHMARKS.md / the session's closing note).
 Not run by CI (NumPy is not a dependency). Usage:
   python3 scripts/coverage_heldout.py target/release/fieldbal [realisations]
 """
-import json, subprocess, sys, numpy as np
+import sys, numpy as np
 
-from rotor_model import heldout_w
+from cli_jobs import noisy_session, solve
+from rotor_model import heldout_job
 
 BIN = sys.argv[1]
 R = int(sys.argv[2]) if len(sys.argv) > 2 else 200
 rng = np.random.default_rng(12345)
-zp = np.array([0.2, 0.5, 0.8])
-W = heldout_w  # the rotor, scripts/rotor_model.py
 
 def case(speeds, effect, noise_pct=2.0, noise_deg=2.0, samples=False):
-    Wx = np.vstack([W(sp, zp) for sp in speeds])
-    Wextra = np.vstack([W(sp, [0.35, 0.65]) for sp in speeds])
-    U0 = 50 * np.exp(1j * np.array([0.3, 2.1, 4.0]))
-    Ue = 15 * np.exp(1j * np.array([1.0, 5.0]))
-    Y0 = Wx @ U0 + Wextra @ Ue
-    ystd = np.sqrt(np.mean(np.abs(Y0) ** 2))
-    T = np.array([effect * ystd / np.sqrt(np.mean(np.abs(Wx[:, j]) ** 2)) for j in range(3)])
-    T = T * np.exp(1j * np.array([0.0, 1.3, 2.6]))
+    Wx, Y0, T = heldout_job(speeds, effect)  # the rotor, scripts/rotor_model.py
     Cstar = -np.linalg.lstsq(Wx, Y0, rcond=None)[0]
-    exact = [Y0] + [Y0 + Wx[:, j] * T[j] for j in range(3)]
+    exact = np.stack([Y0] + [Y0 + Wx[:, j] * T[j] for j in range(3)], axis=1)
     hits_e = hits_a = n_e = n_a = 0
     flagged = 0
     errs = []
     for r in range(R):
-        runs = []
-        for i, y in enumerate(exact):
-            readings = []
-            for a, v in enumerate(y):
-                def noisy():
-                    amp = abs(v) * (1 + noise_pct / 100 * rng.standard_normal())
-                    ph = np.degrees(np.angle(v)) + noise_deg * rng.standard_normal()
-                    return amp, ph
-                if samples:
-                    ss = [noisy() for _ in range(6)]
-                    zz = np.mean([s[0] * np.exp(1j * np.radians(s[1])) for s in ss])
-                    rd = {"amplitude": abs(zz), "phase_deg": np.degrees(np.angle(zz)) % 360,
-                          "samples": [{"amplitude": s[0], "phase_deg": s[1] % 360} for s in ss]}
-                else:
-                    amp, ph = noisy()
-                    rd = {"amplitude": amp, "phase_deg": ph % 360}
-                rd.update({"speed_rpm": speeds[a // 4], "sensor": ["1H", "1V", "2H", "2V"][a % 4]})
-                readings.append(rd)
-            weights = [] if i == 0 else [{"plane": "P%d" % (i - 1), "mass_g": abs(T[i - 1]), "angle_deg": np.degrees(np.angle(T[i - 1])) % 360}]
-            runs.append({"id": "R%d" % i, "weights": weights, "readings": readings})
-        sess = {"name": "heldout", "conventions": {"phase": "lead", "angle_direction": "with_rotation"},
-                "planes": [{"id": "P%d" % j} for j in range(3)],
-                "sensors": [{"id": s, "unit": "um_pp"} for s in ["1H", "1V", "2H", "2V"]], "runs": runs}
+        sess = noisy_session(rng, exact, T, speeds, ["1H", "1V", "2H", "2V"], samples, noise_pct, noise_deg)
         opts = {} if samples else {"amplitude_noise_pct": noise_pct, "phase_noise_deg": noise_deg}
-        out = subprocess.run([BIN, "solve", "-"], input=json.dumps({"session": sess, "options": opts}).encode(), capture_output=True)
-        sol = json.loads(out.stdout)
-        if "corrections" not in sol:
+        sol, C = solve(BIN, sess, opts)
+        if C is None:
             print("error", sol); continue
-        C = np.array([c["mass_g"] * np.exp(1j * np.radians(c["angle_deg"])) for c in sol["corrections"]])
         for j, c in enumerate(sol["corrections"]):
             S = np.array(c["uncertainty"]["covariance_g2"])
             d = Cstar[j] - C[j]; dv = np.array([d.real, d.imag])

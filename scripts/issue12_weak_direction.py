@@ -47,7 +47,7 @@ Usage: python3 scripts/issue12_weak_direction.py [calibration realisations]
 import sys
 import numpy as np
 
-from rotor_model import heldout_w
+from rotor_model import heldout_job
 
 K95 = 5.991464547107979  # χ²₂ 95 %
 K6 = 12.591587243743977  # χ²₆ 95 %
@@ -80,13 +80,7 @@ def test_rotor(planes, effect, rpm=3000.0):
 
 def heldout(effect, speed=3000.0):
     """scripts/coverage_heldout.py's rotor at one speed (P0, P2 nearly dependent)."""
-    zp = np.array([0.2, 0.5, 0.8])
-    Wf = lambda zcols: heldout_w(speed, zcols)
-    W, We = Wf(zp), Wf([0.35, 0.65])
-    Y0 = W @ (50 * np.exp(1j * np.array([0.3, 2.1, 4.0]))) + We @ (15 * np.exp(1j * np.array([1.0, 5.0])))
-    ystd = np.sqrt(np.mean(np.abs(Y0) ** 2))
-    T = np.array([effect * ystd / np.sqrt(np.mean(np.abs(W[:, j]) ** 2)) for j in range(3)])
-    return W, Y0, T * np.exp(1j * np.array([0.0, 1.3, 2.6]))
+    return heldout_job([speed], effect)
 
 
 FIXTURES = {

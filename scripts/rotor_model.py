@@ -8,7 +8,11 @@ script's own folder on the path).
   speed-major, sensor within speed) and as-found vibration, um per g and um;
 - `heldout_w(speed, zcols)`: the 3-mode, anisotropic rotor of
   scripts/coverage_heldout.py (sensors 1H, 1V, 2H, 2V), the influence of a
-  unit unbalance at each axial station of `zcols`, um per g.
+  unit unbalance at each axial station of `zcols`, um per g;
+- `heldout_job(speeds, effect)`: that rotor's job: planes at stations 0.2,
+  0.5, 0.8, unbalance also at 0.35 and 0.65 (outside the planes), trials of
+  `effect` times the RMS vibration at phases 0, 1.3, 2.6 rad; returns the
+  influence matrix, the as-found vibration and the complex trial masses.
 """
 import numpy as np
 
@@ -63,3 +67,13 @@ def heldout_w(speed, zcols):
                 w = WK[k] * ANISO[s]
                 out[s, j] += phi(k, ZS[s]) * phi(k, z) * speed**2 / (w**2 - speed**2 + 2j * ZK[k] * w * speed)
     return out * 0.8  # um per g
+
+
+def heldout_job(speeds, effect):
+    zp = np.array([0.2, 0.5, 0.8])
+    w = np.vstack([heldout_w(sp, zp) for sp in speeds])
+    w_extra = np.vstack([heldout_w(sp, [0.35, 0.65]) for sp in speeds])
+    y0 = w @ (50 * np.exp(1j * np.array([0.3, 2.1, 4.0]))) + w_extra @ (15 * np.exp(1j * np.array([1.0, 5.0])))
+    ystd = np.sqrt(np.mean(np.abs(y0) ** 2))
+    t = np.array([effect * ystd / np.sqrt(np.mean(np.abs(w[:, j]) ** 2)) for j in range(3)])
+    return w, y0, t * np.exp(1j * np.array([0.0, 1.3, 2.6]))

@@ -46,7 +46,7 @@ mod trust;
 
 pub use apply::{fill, noise_options, reading_covariances, Noise, SNR_THRESHOLD};
 pub use bias::debiased;
-pub use propagate::{propagate, Propagation};
+pub use propagate::{propagate, Known, Problem, Propagation};
 pub use region::{amplitude_95, correction_uncertainty, normal_cdf, CHI2_2_95};
 pub use remaining::{
     calibrated_scale, remaining_amplitude_95, residual_shrinkage, weight_sensitivity, Pooled,

@@ -2,7 +2,7 @@
 //! Carlo through the public solve, and finite differences of the LS fit.
 
 use fieldbal::balancing::model::SolveOptions;
-use fieldbal::balancing::uncertainty::propagate;
+use fieldbal::balancing::uncertainty::{propagate, Problem};
 use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 use rand::rngs::StdRng;
@@ -35,7 +35,15 @@ fn a_single_plane_correction_has_the_relative_spread_of_the_closed_form() {
     let sigma = 0.01 * a.norm();
     let iso = Matrix2::identity() * (sigma * sigma / 2.0);
     let c_hat = DVector::from_element(1, -a / w);
-    let p = propagate(&t, &y, &[vec![iso, iso]], &[0], &[1.0], &[0], &c_hat);
+    let problem = Problem {
+        t: &t,
+        y: &y,
+        cov: &[vec![iso, iso]],
+        used_rows: &[0],
+        row_weights: &[1.0],
+        used_planes: &[0],
+    };
+    let p = propagate(&problem, &c_hat, None);
     let rel = p.correction[0].trace().sqrt() / c_hat[0].norm();
     let r = c_hat[0] / u;
     let closed = sigma / a.norm() * ((1.0 - r).norm_sqr() + r.norm_sqr()).sqrt();
@@ -182,7 +190,15 @@ fn the_linearised_covariance_is_the_finite_difference_jacobian_of_the_least_squa
                 .collect()
         })
         .collect();
-    let p = propagate(&t, &exact, &cov, &rows, &g, &[0, 1], &c0);
+    let problem = Problem {
+        t: &t,
+        y: &exact,
+        cov: &cov,
+        used_rows: &rows,
+        row_weights: &g,
+        used_planes: &[0, 1],
+    };
+    let p = propagate(&problem, &c0, None);
     // Σ J Σ_r Jᵀ with J by central differences of the LS solution, of the
     // prediction R̂ = Y0 + W C, and of Y0 + W C0 with the fitted C0 held fixed.
     let h = 1e-6;

@@ -124,15 +124,18 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let checked = &fit.checked;
     let conv = checked.conventions;
     let sel = &fit.selection;
-    let prop = super::propagate::propagate_factored(
-        &checked.t,
-        &checked.y,
+    let problem = super::Problem {
+        t: &checked.t,
+        y: &checked.y,
         cov,
-        &sel.rows,
-        &sel.weights,
-        &fit.planes,
+        used_rows: &sel.rows,
+        row_weights: &sel.weights,
+        used_planes: &fit.planes,
+    };
+    let prop = super::propagate(
+        &problem,
         &fit.c,
-        fit.t_pinv.as_ref().map(|t_pinv| super::propagate::Known {
+        fit.t_pinv.as_ref().map(|t_pinv| super::Known {
             t_pinv,
             w: &fit.w,
             factor: &fit.factor,

@@ -45,7 +45,7 @@
 use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 
-use super::propagate::{moments, svd_parts};
+use super::propagate::{moments, svd_parts, Problem};
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::validate::Checked;
 
@@ -80,14 +80,9 @@ impl Expansion {
     /// `None` when the weighted problem is rank deficient (no unique
     /// correction to correct) or square (no residual, so no bias: the
     /// hat-matrix factor `1 − P_ii` of the module doc is zero).
-    fn new(
-        t: &DMatrix<Complex64>,
-        y: &DMatrix<Complex64>,
-        cov: &[Vec<Matrix2<f64>>],
-        used_rows: &[usize],
-        row_weights: &[f64],
-        used_planes: &[usize],
-    ) -> Option<Expansion> {
+    fn new(p: &Problem) -> Option<Expansion> {
+        let (y, used_rows, row_weights, used_planes) =
+            (p.y, p.used_rows, p.row_weights, p.used_planes);
         let runs = y.ncols();
         let (m, q) = (used_rows.len(), used_planes.len());
         // As many rows as planes: the fit is exact (a ratio of readings) and
@@ -96,7 +91,7 @@ impl Expansion {
         if m <= q || q == 0 {
             return None;
         }
-        let (tp, _) = svd_parts(t);
+        let (tp, _) = svd_parts(p.t);
         // ω_k over the used planes: how reading k of a row moves that row of W.
         let omega = DMatrix::from_fn(q, runs, |j, k| match k {
             0 => -tp.column(used_planes[j]).sum(),
@@ -124,7 +119,7 @@ impl Expansion {
         let b = DVector::from_fn(m, |i, _| y[(used_rows[i], 0)] * row_weights[i]);
         let mom: Vec<Vec<(f64, Complex64)>> = used_rows
             .iter()
-            .map(|&row| cov[row].iter().take(runs).map(moments).collect())
+            .map(|&row| p.cov[row].iter().take(runs).map(moments).collect())
             .collect();
         let g2: Vec<f64> = row_weights.iter().map(|g| g * g).collect();
         let omega_bar = omega.map(|x| x.conj());
@@ -206,7 +201,15 @@ pub fn debiased(
     if !least_squares || bounded || !(stated || measured) {
         return c;
     }
-    let Some(expansion) = Expansion::new(&checked.t, &checked.y, cov, rows, weights, planes) else {
+    let problem = Problem {
+        t: &checked.t,
+        y: &checked.y,
+        cov,
+        used_rows: rows,
+        row_weights: weights,
+        used_planes: planes,
+    };
+    let Some(expansion) = Expansion::new(&problem) else {
         return c;
     };
     let finite = |b: &DVector<Complex64>| b.iter().all(|z| z.re.is_finite() && z.im.is_finite());

@@ -54,8 +54,15 @@ fn the_propagation_gives_each_rows_covariance_through_the_correction() {
     let rows: Vec<usize> = (0..5).collect();
     let weights = vec![1.0, 2.0, 1.0, 0.5, 1.0];
     let corr = nalgebra::DVector::from_vec(vec![c(-3.0, 1.0), c(2.0, -2.5)]);
-    let prop =
-        crate::balancing::uncertainty::propagate(&t, &y, &cov, &rows, &weights, &[0, 1], &corr);
+    let problem = crate::balancing::uncertainty::Problem {
+        t: &t,
+        y: &y,
+        cov: &cov,
+        used_rows: &rows,
+        row_weights: &weights,
+        used_planes: &[0, 1],
+    };
+    let prop = crate::balancing::uncertainty::propagate(&problem, &corr, None);
     for a in 0..5 {
         let row: Vec<Complex64> = (0..2).map(|j| w[(a, j)]).collect();
         let expected = through_correction(&row, &prop.correction_full);

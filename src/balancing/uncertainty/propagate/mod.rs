@@ -72,12 +72,43 @@ pub struct Propagation {
     /// rank tolerance): what `trust::kappa` needs, without a second SVD (issue 15).
     pub gram_inv_diag: Option<Vec<f64>>,
 }
+
+/// The readings and the selection that a propagation (and `bias`'s
+/// expansion of the same normal equations) is taken over.
+#[derive(Clone, Copy)]
+pub struct Problem<'a> {
+    /// Planes × trial runs weights (exact).
+    pub t: &'a DMatrix<Complex64>,
+    /// Rows × (1 + trial runs) readings, column 0 the reference `Y0`.
+    pub y: &'a DMatrix<Complex64>,
+    /// `cov[a][k]`, the 2×2 covariance of `y[(a, k)]`.
+    pub cov: &'a [Vec<Matrix2<f64>>],
+    /// The rows of the fit.
+    pub used_rows: &'a [usize],
+    /// One per used row: `G` of method 3.3.
+    pub row_weights: &'a [f64],
+    /// The solved planes, in the order of the correction.
+    pub used_planes: &'a [usize],
+}
+
+/// What the solve already computed that the propagation needs (issue 15).
+#[derive(Clone, Copy)]
+pub struct Known<'a> {
+    /// `T⁺`, trial runs × planes.
+    pub t_pinv: &'a DMatrix<Complex64>,
+    /// `W = ΔY T⁺`, rows × planes (method 2.1).
+    pub w: &'a DMatrix<Complex64>,
+    /// The factorisation of `A = G W[u,p]`.
+    pub factor: &'a Factored,
+}
+
 /// Propagate reading noise to the correction and the residual.
 ///
-/// - `t`: planes × trial runs weights (exact); `y`: rows × (1 + trial runs)
-///   readings, column 0 the reference `Y0`; `cov[a][k]` the 2×2 covariance of `y[(a, k)]`;
-/// - `used_rows`, `row_weights` (one per used row, `G` of 3.3), `used_planes`;
-/// - `c`: the correction of the used planes.
+/// - `p`: the readings, their covariances and the selection ([`Problem`]);
+/// - `c`: the correction of the used planes;
+/// - `known`: what the solve already has: `T⁺`, `W` and the factorisation
+///   of `A = G W[u,p]` (issue 15: `A⁺` and `(AᴴA)⁺` from the one
+///   factorisation, not a QR and SVD of their own); `None` computes them here.
 ///
 /// With `A = G W[u,p]`, `b = G Y0[u]`, `r = A C + b` (the weighted residual),
 /// differentiating the normal equations `Aᴴ(A C + b) = 0` gives
@@ -100,43 +131,15 @@ pub struct Propagation {
 /// For a solution that is not the least-squares one (min-max, active mass
 /// bounds), this is the derivative of the least-squares solution taken at `c`:
 /// an approximation, see [`super::fill`].
-pub fn propagate(
-    t: &DMatrix<Complex64>,
-    y: &DMatrix<Complex64>,
-    cov: &[Vec<Matrix2<f64>>],
-    used_rows: &[usize],
-    row_weights: &[f64],
-    used_planes: &[usize],
-    c: &DVector<Complex64>,
-) -> Propagation {
-    propagate_factored(t, y, cov, used_rows, row_weights, used_planes, c, None)
-}
-
-/// What the solve already computed that the propagation needs (issue 15).
-#[derive(Clone, Copy)]
-pub struct Known<'a> {
-    /// `T⁺`, trial runs × planes.
-    pub t_pinv: &'a DMatrix<Complex64>,
-    /// `W = ΔY T⁺`, rows × planes (method 2.1).
-    pub w: &'a DMatrix<Complex64>,
-    /// The factorisation of `A = G W[u,p]`.
-    pub factor: &'a Factored,
-}
-
-/// [`propagate`] with what the solve already has: `T⁺`, `W` and the
-/// factorisation of `A = G W[u,p]` (issue 15: `A⁺` and `(AᴴA)⁺` from the one
-/// factorisation, not a QR and SVD of their own); `None` computes them here.
-#[allow(clippy::too_many_arguments)]
-pub fn propagate_factored(
-    t: &DMatrix<Complex64>,
-    y: &DMatrix<Complex64>,
-    cov: &[Vec<Matrix2<f64>>],
-    used_rows: &[usize],
-    row_weights: &[f64],
-    used_planes: &[usize],
-    c: &DVector<Complex64>,
-    known: Option<Known>,
-) -> Propagation {
+pub fn propagate(p: &Problem, c: &DVector<Complex64>, known: Option<Known>) -> Propagation {
+    let Problem {
+        t,
+        y,
+        cov,
+        used_rows,
+        row_weights,
+        used_planes,
+    } = *p;
     let (n, runs) = y.shape();
     let planes = t.nrows();
     let q = used_planes.len();

@@ -193,11 +193,14 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         w: &fit.w,
         planes: &fit.planes,
         used_rows: &sel.rows,
-        c: &fit.c,
         r_hat: &fit.residual,
         own: &prop.residual,
         correction_full: &prop.correction_full,
-        t_pinv: fit.t_pinv.as_ref(),
+        // The product term with estimated coefficients (`T⁺` known).
+        omega_lambda: fit
+            .t_pinv
+            .is_some()
+            .then_some((&prop.omega, &prop.lambda[..])),
         cov,
     };
     let rows: Vec<Row> = super::remaining::joint::rows(&joint).unwrap_or_else(|| {

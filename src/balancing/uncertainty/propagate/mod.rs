@@ -71,6 +71,14 @@ pub struct Propagation {
     /// `None` when `A` is rank deficient (a singular value at or below the
     /// rank tolerance): what `trust::kappa` needs, without a second SVD (issue 15).
     pub gram_inv_diag: Option<Vec<f64>>,
+    /// `Ω`, runs × used planes: row `k` is `ω_k` over the used planes, how
+    /// reading `k` of a row moves that row of `W` (`ω_0 = −1ᵀT⁺`, `ω_k =
+    /// T⁺[k−1, :]`); `remaining::joint`'s product term (method 8.9) reads it
+    /// from here rather than forming it again.
+    pub omega: DMatrix<Complex64>,
+    /// `λ_k = ω_k·C (+1 for k = 0)` per run: the reading's direct effect on
+    /// `R_a`, with `omega` for the product term.
+    pub lambda: Vec<Complex64>,
 }
 
 /// The readings and the selection that a propagation (and `bias`'s
@@ -188,17 +196,14 @@ pub fn propagate(p: &Problem, c: &DVector<Complex64>, known: Option<Known>) -> P
         position[a] = Some(i);
     }
     // Per run k: ω_k over the used planes, λ_k, and (AᴴA)⁻¹ ω̄_k.
-    let omega: Vec<DVector<Complex64>> = (0..runs)
-        .map(|k| {
-            DVector::from_fn(q, |j, _| match k {
-                0 => -s[used_planes[j]],
-                _ => tp[(k - 1, used_planes[j])],
-            })
-        })
-        .collect();
+    let omega = DMatrix::from_fn(runs, q, |k, j| match k {
+        0 => -s[used_planes[j]],
+        _ => tp[(k - 1, used_planes[j])],
+    });
     let lambda: Vec<Complex64> = (0..runs)
         .map(|k| {
-            omega[k]
+            omega
+                .row(k)
                 .iter()
                 .zip(c.iter())
                 .map(|(o, cj)| o * cj)
@@ -207,8 +212,8 @@ pub fn propagate(p: &Problem, c: &DVector<Complex64>, known: Option<Known>) -> P
         })
         .collect();
     let g_omega: Vec<DVector<Complex64>> = omega
-        .iter()
-        .map(|o| &gram_inv * o.map(|x| x.conj()))
+        .row_iter()
+        .map(|o| &gram_inv * o.transpose().map(|x| x.conj()))
         .collect();
     // |λ_k|² and λ_k², once per run rather than once per reading.
     let lambda_sq: Vec<(f64, Complex64)> = lambda.iter().map(|l| (l.norm_sqr(), l * l)).collect();
@@ -242,5 +247,7 @@ pub fn propagate(p: &Problem, c: &DVector<Complex64>, known: Option<Known>) -> P
         remaining_cross: rows.remaining_cross,
         effect_sd: rows::effect_sd(t, tp, &s, cov, n),
         gram_inv_diag,
+        omega,
+        lambda,
     }
 }

@@ -77,12 +77,10 @@ use product::Second;
 pub struct Inputs<'a> {
     /// `W`, all rows × all planes.
     pub w: &'a DMatrix<Complex64>,
-    /// The solved planes (columns of `w`), in the order of `c`.
+    /// The solved planes (columns of `w`), in the order of the correction.
     pub planes: &'a [usize],
     /// The rows of the fit.
     pub used_rows: &'a [usize],
-    /// The reported correction.
-    pub c: &'a DVector<Complex64>,
     /// `R̂` at every row.
     pub r_hat: &'a DVector<Complex64>,
     /// `D_a(Ĉ)`, the covariance of the row's own reading errors with `C`
@@ -90,8 +88,9 @@ pub struct Inputs<'a> {
     pub own: &'a [Matrix2<f64>],
     /// The real `2q × 2q` covariance of `dC` (`Propagation::correction_full`).
     pub correction_full: &'a DMatrix<f64>,
-    /// `T⁺` (trial runs × planes); `None`: no product term.
-    pub t_pinv: Option<&'a DMatrix<Complex64>>,
+    /// `Ω` (runs × q, row `k` is `ω_k`) and `λ_k` of the propagation
+    /// (`Propagation::omega`, `lambda`); `None`: no product term.
+    pub omega_lambda: Option<(&'a DMatrix<Complex64>, &'a [Complex64])>,
     /// The readings' covariances, `[row][run]`.
     pub cov: &'a [Vec<Matrix2<f64>>],
 }
@@ -109,7 +108,9 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
         return None;
     }
     let (nn, mm) = (2 * q, 2 * m);
-    let second = inp.t_pinv.map(|tp| Second::of(tp, inp));
+    let second = inp
+        .omega_lambda
+        .map(|(omega, lambda)| Second::of(omega, lambda, inp));
     // The whitening of each used row's own errors at the true `C`.
     let mut f = Vec::with_capacity(m);
     for &b in inp.used_rows {

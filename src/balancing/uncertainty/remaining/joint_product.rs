@@ -21,11 +21,12 @@ pub fn hermitian_part(full: &DMatrix<f64>) -> DMatrix<Complex64> {
 }
 
 /// The product term's ingredients (module doc): `Ω` (runs × q, row `k` is
-/// `ω_k`: `−1ᵀT⁺` for the reference run, `T⁺`'s row otherwise), `λ_k`, the
+/// `ω_k`: `−1ᵀT⁺` for the reference run, `T⁺`'s row otherwise) and `λ_k`,
+/// both as the propagation formed them (`Propagation::omega`, `lambda`), the
 /// readings' `s_ak = tr S_ak` (rows × runs), `E|z_a|²`, `V_e,a`, and `K`.
-pub struct Second {
-    omega: DMatrix<Complex64>,
-    lambda: Vec<Complex64>,
+pub struct Second<'a> {
+    omega: &'a DMatrix<Complex64>,
+    lambda: &'a [Complex64],
     s: DMatrix<f64>,
     pub ez: Vec<f64>,
     ve: Vec<f64>,
@@ -33,26 +34,11 @@ pub struct Second {
     h: DMatrix<Complex64>,
 }
 
-impl Second {
-    pub fn of(tp: &DMatrix<Complex64>, inp: &Inputs) -> Second {
-        let (n, q, runs) = (inp.w.nrows(), inp.planes.len(), tp.nrows() + 1);
-        let omega = DMatrix::from_fn(runs, q, |k, j| match k {
-            0 => -tp.column(inp.planes[j]).sum(),
-            _ => tp[(k - 1, inp.planes[j])],
-        });
-        let lambda: Vec<Complex64> = (0..runs)
-            .map(|k| {
-                omega
-                    .row(k)
-                    .iter()
-                    .zip(inp.c.iter())
-                    .map(|(o, c)| o * c)
-                    .sum::<Complex64>()
-                    + if k == 0 { 1.0 } else { 0.0 }
-            })
-            .collect();
+impl<'a> Second<'a> {
+    pub fn of(omega: &'a DMatrix<Complex64>, lambda: &'a [Complex64], inp: &Inputs) -> Second<'a> {
+        let (n, runs) = (inp.w.nrows(), omega.nrows());
         let k_mat = hermitian_part(inp.correction_full);
-        let h = &omega * &k_mat * omega.adjoint();
+        let h = omega * &k_mat * omega.adjoint();
         let mut s = Vec::with_capacity(n * runs);
         for k in 0..runs {
             s.extend(inp.cov.iter().map(|row| row[k].trace()));
@@ -87,7 +73,7 @@ impl Second {
         let runs = self.lambda.len();
         // H̃_kl = Re(λ̄_k (Ω K Ωᴴ)_kl λ_l), then the same with Λ⁻¹.
         let mut ht = DMatrix::<f64>::zeros(runs, 2 * runs);
-        let h_cond = &self.omega * hermitian_part(l_inv) * self.omega.adjoint();
+        let h_cond = self.omega * hermitian_part(l_inv) * self.omega.adjoint();
         for (half, h) in [&self.h, &h_cond].into_iter().enumerate() {
             for kk in 0..runs {
                 for l in 0..runs {

@@ -31,12 +31,11 @@ fn inv_sqrt(s: &Matrix2<f64>) -> Matrix2<f64> {
     out
 }
 
-/// Every row and plane used, `C = 0`, no supplied coefficients: the setting
+/// Every row and plane used, no product term (`omega_lambda` none): the setting
 /// of the linear Gaussian tests below.
 struct AllUsed {
     planes: Vec<usize>,
     used: Vec<usize>,
-    c: DVector<Complex64>,
     full: DMatrix<f64>,
 }
 
@@ -45,7 +44,6 @@ impl AllUsed {
         AllUsed {
             planes: (0..q).collect(),
             used: (0..n).collect(),
-            c: DVector::zeros(q),
             full: DMatrix::zeros(2 * q, 2 * q),
         }
     }
@@ -60,11 +58,10 @@ impl AllUsed {
             w,
             planes: &self.planes,
             used_rows: &self.used,
-            c: &self.c,
             r_hat,
             own,
             correction_full: &self.full,
-            t_pinv: None,
+            omega_lambda: None,
             cov: &[],
         }
     }
@@ -87,21 +84,8 @@ fn the_products_equal_the_per_row_reference_form() {
     let own: Vec<Matrix2<f64>> = (0..n).map(|_| spd(&mut rng, 0.3)).collect();
     let g = DMatrix::from_fn(2 * q, 2 * q, |_, _| rng.gen_range(-0.1..0.1));
     let full = &g * g.transpose() + DMatrix::identity(2 * q, 2 * q) * 0.01;
-    let inp = Inputs {
-        w: &w,
-        planes: &used_planes,
-        used_rows: &used_rows,
-        c: &c,
-        r_hat: &r_hat,
-        own: &own,
-        correction_full: &full,
-        t_pinv: Some(&t_pinv),
-        cov: &cov,
-    };
-    let rows = rows(&inp).expect("formed");
-
-    // Reference, as session 9 wrote it.
-    let wrow = |a: usize| -> Vec<Complex64> { used_planes.iter().map(|&p| w[(a, p)]).collect() };
+    // `ω_k` and `λ_k` as `propagate` forms them (method 8.9), the reference's
+    // and `Inputs`'s alike.
     let omega: Vec<DVector<Complex64>> = (0..runs)
         .map(|k| {
             DVector::from_fn(q, |j, _| match k {
@@ -113,6 +97,21 @@ fn the_products_equal_the_per_row_reference_form() {
     let lambda: Vec<Complex64> = (0..runs)
         .map(|k| omega[k].dot(&c) + if k == 0 { 1.0 } else { 0.0 })
         .collect();
+    let omega_rows = DMatrix::from_fn(runs, q, |k, j| omega[k][j]);
+    let inp = Inputs {
+        w: &w,
+        planes: &used_planes,
+        used_rows: &used_rows,
+        r_hat: &r_hat,
+        own: &own,
+        correction_full: &full,
+        omega_lambda: Some((&omega_rows, &lambda)),
+        cov: &cov,
+    };
+    let rows = rows(&inp).expect("formed");
+
+    // Reference, as session 9 wrote it.
+    let wrow = |a: usize| -> Vec<Complex64> { used_planes.iter().map(|&p| w[(a, p)]).collect() };
     let kc = hermitian_part(&full);
     let quad = |g: &DVector<Complex64>, k: &DMatrix<Complex64>| {
         (g.transpose() * k * g.map(|x| x.conj()))[(0, 0)].re
@@ -184,7 +183,7 @@ fn the_products_equal_the_per_row_reference_form() {
     }
 }
 
-/// Linear Gaussian model, no product term (`t_pinv` none): the true
+/// Linear Gaussian model, no product term (`omega_lambda` none): the true
 /// remaining vibration `W_a dC` given every row's prediction `v = (I −
 /// W W⁺) e` is `N(m_a, Σ_ε,a)` exactly (method 8.8), so the bound at `S = 0`
 /// holds 95 %. 2,000 jobs of 12 rows; the checks of one job share its `dC`,

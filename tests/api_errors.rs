@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{example, post, send, start_server};
+use common::{example, fresh_server, post, send};
 use serde_json::{json, Value};
 
 /// A request body: JSON, or raw bytes for what JSON cannot express.
@@ -120,9 +120,7 @@ fn with_value(change: impl FnOnce(&mut Value)) -> Value {
 
 #[tokio::test]
 async fn every_bad_request_gets_its_status_and_field_and_the_server_keeps_answering() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let (status, _, created) = post(&client, &server.url("/api/v1/sessions"), &session()).await;
     assert_eq!(status, 201);
     let id = created["id"].as_str().unwrap();
@@ -199,9 +197,7 @@ async fn every_bad_request_gets_its_status_and_field_and_the_server_keeps_answer
 
 #[tokio::test]
 async fn a_stored_session_that_cannot_be_solved_yet_gets_422_and_no_solution_is_stored() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let mut only_reference = session();
     only_reference["runs"] = json!([run(0)]);
     let (status, _, created) =

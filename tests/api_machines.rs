@@ -6,7 +6,7 @@
 mod common;
 mod job_support;
 
-use common::{post, send, start_server};
+use common::{fresh_server, post, send};
 use fieldbal::balancing::model::Conventions;
 use fieldbal::balancing::phasor::{angle_diff_deg, weight_out};
 use job_support::*;
@@ -39,9 +39,7 @@ fn error_of(body: &Value) -> (&str, Option<&str>) {
 
 #[tokio::test]
 async fn a_machine_is_created_once_listed_in_pages_and_deleted_without_its_sessions() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/machines");
     let body = json!({"id": "ID-FAN-3", "name": "ID fan 3",
         "rotor": {"mass_kg": 420, "service_speed_rpm": 1480, "balance_grade": "G6.3"}, "notes": "coupling end"});
@@ -104,9 +102,7 @@ async fn a_machine_is_created_once_listed_in_pages_and_deleted_without_its_sessi
 
 #[tokio::test]
 async fn invalid_machines_are_rejected_naming_the_field() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/machines");
     let long = "x".repeat(65);
     let cases = [
@@ -152,9 +148,7 @@ async fn invalid_machines_are_rejected_naming_the_field() {
 
 #[tokio::test]
 async fn a_new_job_with_only_its_reference_run_is_trimmed_from_the_machines_stored_coefficients() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let rotor = Rotor::new();
     post(
         &client,
@@ -404,9 +398,7 @@ async fn a_new_job_with_only_its_reference_run_is_trimmed_from_the_machines_stor
 
 #[tokio::test]
 async fn versions_pooled_at_the_same_time_are_consecutive_and_never_collide() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     post(
         &client,
         &server.url("/api/v1/machines"),
@@ -431,9 +423,8 @@ async fn versions_pooled_at_the_same_time_are_consecutive_and_never_collide() {
 
 #[tokio::test]
 async fn the_openapi_document_lists_the_machine_endpoints() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let (_, _, doc) = send(reqwest::Client::new().get(server.url("/api/v1/openapi.json"))).await;
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
     for path in [
         "/api/v1/machines",
         "/api/v1/machines/{id}",

@@ -3,13 +3,11 @@
 
 mod common;
 
-use common::{send, start_server};
+use common::{fresh_server, send};
 
 #[tokio::test]
 async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let (status, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
     assert_eq!(status, 200);
     assert!(doc["openapi"].as_str().unwrap().starts_with("3."));

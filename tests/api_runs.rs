@@ -3,14 +3,12 @@
 
 mod common;
 
-use common::{example, post, send, start_server};
+use common::{example, fresh_server, post, send};
 use serde_json::{json, Value};
 
 #[tokio::test]
 async fn a_corrected_run_keeps_its_earlier_version_and_the_solution_uses_the_new_one() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let ex = example("pump-two-plane-exact.json");
     let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
     let base = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());
@@ -86,9 +84,7 @@ fn typo_as_stored(run: &Value) -> Value {
 
 #[tokio::test]
 async fn run_ids_with_spaces_and_slashes_are_reachable_at_their_location() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let mut session = example("pump-two-plane-exact.json")["session"].clone();
     let mut trial = session["runs"].as_array_mut().unwrap().pop().unwrap();
     trial["id"] = json!("trial B / 40 g");
@@ -111,9 +107,7 @@ async fn run_ids_with_spaces_and_slashes_are_reachable_at_their_location() {
 
 #[tokio::test]
 async fn deleting_a_session_removes_it_with_its_runs_and_solutions() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let ex = example("pump-two-plane-exact.json");
     let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
     let base = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());

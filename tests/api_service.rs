@@ -5,15 +5,13 @@ mod common;
 
 use std::time::Duration;
 
-use common::{example, post, send, start_server, start_server_configured, start_server_with};
+use common::{example, fresh_server, post, send, start_server_configured, start_server_with};
 use serde_json::json;
 use tokio::io::{AsyncReadExt, AsyncWriteExt};
 
 #[tokio::test]
 async fn a_request_id_is_generated_or_echoed() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let res = client.get(server.url("/healthz")).send().await.unwrap();
     let generated = res.headers()["x-request-id"].to_str().unwrap().to_string();
     assert_eq!(generated.len(), 36, "a uuid: {generated}");
@@ -49,9 +47,7 @@ async fn the_body_limit_is_configurable_and_answered_with_413_json() {
 
 #[tokio::test]
 async fn json_with_a_charset_parameter_is_accepted() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let req = client
         .post(server.url("/api/v1/sessions"))
@@ -64,9 +60,7 @@ async fn json_with_a_charset_parameter_is_accepted() {
 
 #[tokio::test]
 async fn of_ten_racing_appends_of_one_run_exactly_one_is_stored() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let mut session = example("pump-two-plane-exact.json")["session"].clone();
     let run = session["runs"].as_array_mut().unwrap().pop().unwrap();
     let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{example, post, send, start_server, SOLVABLE_EXAMPLES};
+use common::{example, fresh_server, post, send, start_server, SOLVABLE_EXAMPLES};
 use fieldbal::balancing::model::Session;
 use serde_json::{json, Value};
 
@@ -14,9 +14,7 @@ fn as_session(v: &Value) -> Session {
 
 #[tokio::test]
 async fn every_public_example_is_stored_read_back_identical_and_solved_to_its_expected_answer() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for name in SOLVABLE_EXAMPLES {
         let ex = example(name);
         let (status, headers, created) =
@@ -60,9 +58,7 @@ async fn every_public_example_is_stored_read_back_identical_and_solved_to_its_ex
 
 #[tokio::test]
 async fn runs_appended_one_by_one_give_the_same_session_and_solution_as_the_whole_session() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for name in SOLVABLE_EXAMPLES {
         let ex = example(name);
         let whole = &ex["session"];
@@ -151,9 +147,7 @@ async fn sessions_runs_versions_and_solutions_survive_a_restart_on_the_same_file
 
 #[tokio::test]
 async fn fifty_concurrent_posts_are_all_stored_and_listed() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let tasks: Vec<_> = (0..50)
         .map(|i| {

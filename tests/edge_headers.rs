@@ -10,14 +10,12 @@ use std::time::Duration;
 use reqwest::header::{CONTENT_TYPE, ORIGIN};
 use serde_json::json;
 
-use common::{example, post, send, start_server, start_server_configured};
+use common::{example, fresh_server, post, send, start_server, start_server_configured};
 use edge_support::exchange;
 
 #[tokio::test]
 async fn api_answers_are_not_sniffed_cached_or_framed_and_the_form_allows_only_itself() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for path in [
         "/api/v1/sessions",
         "/api/v1/sessions/nope",
@@ -53,9 +51,7 @@ async fn api_answers_are_not_sniffed_cached_or_framed_and_the_form_allows_only_i
 
 #[tokio::test]
 async fn a_write_that_is_not_json_is_refused_with_415_and_changes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
     let id = created["id"].as_str().unwrap();

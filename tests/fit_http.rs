@@ -4,7 +4,7 @@
 mod common;
 mod fit_support;
 
-use common::{post, start_server};
+use common::{fresh_server, post};
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 use serde_json::{json, Value};
@@ -31,9 +31,7 @@ fn with(edit: impl Fn(&mut Value)) -> Value {
 
 #[tokio::test]
 async fn trial_weights_are_suggested_for_a_session_with_only_its_reference_run() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let s = with(|s| s["runs"].as_array_mut().unwrap().truncate(1));
     let (status, _, body) = post(
         &client,
@@ -64,9 +62,7 @@ async fn trial_weights_are_suggested_for_a_session_with_only_its_reference_run()
 
 #[tokio::test]
 async fn a_discrete_solve_over_http_lists_the_weights_and_the_static_and_couple_parts() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let (status, _, body) = post(
         &client,
         &server.url("/api/v1/solve"),
@@ -89,9 +85,7 @@ async fn a_discrete_solve_over_http_lists_the_weights_and_the_static_and_couple_
 
 #[tokio::test]
 async fn bad_places_kits_and_fit_options_are_named_by_field() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     type Edit = fn(&mut Value);
     let cases: Vec<(&str, Edit, Value, u16, &str)> = vec![
         (

@@ -6,7 +6,7 @@
 mod common;
 mod hardening_support;
 
-use common::{post, start_server};
+use common::{fresh_server, post};
 use hardening_support::{client, session, Binary};
 use serde_json::{json, Value};
 
@@ -41,9 +41,7 @@ fn with_runs(n: usize) -> Value {
 
 #[tokio::test]
 async fn each_count_over_its_limit_is_refused_naming_the_count_and_the_limit() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     // (case, session, field named, limit named in the message)
     let cases: Vec<(&str, Value, &str, &str)> = vec![
         ("65 planes", session(65, 1, 1), "planes", "64"),
@@ -84,9 +82,7 @@ async fn each_count_over_its_limit_is_refused_naming_the_count_and_the_limit() {
 
 #[tokio::test]
 async fn sessions_at_the_limits_are_accepted() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for (case, body) in [
         ("64 planes", session(64, 1, 1)),
         ("256 sensors", sized(256, 1)),

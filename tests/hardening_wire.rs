@@ -6,14 +6,12 @@ mod common;
 
 use std::process::{Command, Stdio};
 
-use common::{example, post, start_server};
+use common::{example, fresh_server, post};
 use serde_json::{json, Value};
 
 #[tokio::test]
 async fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let as_array =
         |v: &Value| -> Value { Value::Array(v.as_object().unwrap().values().cloned().collect()) };
@@ -63,9 +61,7 @@ async fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
 /// Every number in `v`, with its path; panics on a null where a number was.
 #[tokio::test]
 async fn every_request_type_refuses_a_positional_array() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let residual: Value = serde_json::from_str(
         &std::fs::read_to_string("tests/data/residual/left-plane-12-positions.json").unwrap(),
@@ -121,9 +117,7 @@ fn assert_no_null(v: &Value, path: &str) {
 
 #[tokio::test]
 async fn tiny_amplitudes_never_give_a_non_number() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for name in [
         "pump-two-plane-exact.json",
         "compressor-multispeed-noisy.json",

@@ -4,19 +4,11 @@
 
 mod common;
 
-use common::{example, post, send, start_server};
+use common::{example, fresh_server, post, send};
 use serde_json::{json, Value};
 
 fn two_plane() -> Value {
     example("pump-two-plane-exact.json")["session"].clone()
-}
-
-/// A server on a fresh database and a client; the directory holds the
-/// database, so keep it for as long as the server runs.
-async fn fresh_server() -> (tempfile::TempDir, common::Server, reqwest::Client) {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    (dir, server, reqwest::Client::new())
 }
 
 /// Store `session` (unkeyed): its id.

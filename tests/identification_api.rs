@@ -7,7 +7,7 @@ mod identification_support;
 
 use std::process::Command;
 
-use common::{example, post, start_server};
+use common::{example, fresh_server, post};
 use fieldbal::balancing::model::{Conventions, Unit};
 use fieldbal::balancing::phasor::reading_out;
 use identification_support::{free_decay_request, model_request, session, speeds, Jeffcott};
@@ -57,9 +57,7 @@ async fn the_textbooks_one_mass_rotor_case_is_reproduced_through_the_endpoint() 
         .iter()
         .find(|c| c["known"]["e"].is_number())
         .expect("the rotor case");
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let (status, _, body) = post(
         &client,
         &server.url("/api/v1/identify/rotor"),
@@ -99,9 +97,7 @@ async fn each_endpoint_answers_what_the_command_line_prints() {
     let rotor = Jeffcott::with(100.0, 2000.0, 0.05);
     let rotor_request =
         json!({"session": session(&[rotor], &speeds(1000.0, 3000.0, 11), Unit::UmPp, 0.0, 0)});
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for (what, request) in [
         ("rotor", rotor_request),
         ("free-decay", free_decay_request()),

@@ -6,7 +6,7 @@
 mod common;
 mod identification_support;
 
-use common::{post, start_server};
+use common::{fresh_server, post};
 use fieldbal::balancing::model::Unit;
 use identification_support::{free_decay_request, model_request, session, speeds, Jeffcott};
 use serde_json::{json, Value};
@@ -225,9 +225,7 @@ async fn bad_input_is_refused_with_the_field_named() {
             "initial.stiffness_parameters",
         ),
     ];
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for (name, what, body, want_status, want_field) in cases {
         let (status, _, answer) = post(
             &client,

@@ -15,7 +15,7 @@ mod job_support;
 
 mod trim_support;
 
-use common::{post, send, start_server};
+use common::{fresh_server, post, send};
 use fieldbal::balancing::model::Conventions;
 use fieldbal::balancing::Solution;
 use job_support::*;
@@ -195,9 +195,7 @@ fn with_supplied_coefficients_an_unknown_from_run_or_a_missing_coefficient_names
 
 #[tokio::test]
 async fn a_trim_from_a_machines_stored_coefficients_through_the_service() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("t.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let rotor = Rotor::new();
     let conv = Conventions::default();
     let (status, _, m) = post(

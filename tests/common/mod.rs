@@ -55,6 +55,15 @@ pub async fn start_server(db_path: &Path) -> (SocketAddr, Server) {
     start_server_with(db_path, http::DEFAULT_BODY_LIMIT).await
 }
 
+/// A server on a fresh database (`t.db` in a new temporary directory) and a
+/// client: how most HTTP tests begin. The directory holds the database, so
+/// keep it (bound to a name, not `_`) for as long as the server runs.
+pub async fn fresh_server() -> (tempfile::TempDir, Server, reqwest::Client) {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, server) = start_server(&dir.path().join("t.db")).await;
+    (dir, server, reqwest::Client::new())
+}
+
 /// As [`start_server`], with another request body limit.
 pub async fn start_server_with(db_path: &Path, body_limit: usize) -> (SocketAddr, Server) {
     start_server_configured(db_path, |s| s.with_body_limit(body_limit)).await

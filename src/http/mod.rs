@@ -10,6 +10,7 @@ pub mod error;
 pub mod extract;
 pub mod headers;
 pub mod openapi;
+pub mod responses;
 pub mod store;
 #[cfg(test)]
 mod time_limit_tests;

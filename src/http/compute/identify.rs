@@ -7,6 +7,7 @@ use axum::Json;
 use crate::balancing::InputError;
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
+use crate::http::responses::{MalformedJson, SolverBusy};
 use crate::http::work::Refused;
 use crate::http::AppState;
 use crate::identification::{
@@ -26,9 +27,9 @@ async fn blocking<T: Send + 'static>(
     request_body = RotorRequest,
     responses(
         (status = 200, description = "Per sensor and plane: critical speed, damping ratio, API 684 amplification factor and separation margin", body = RotorIdentification),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 422, description = "Invalid session or options, too few speeds", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn rotor(
     State(state): State<AppState>,
@@ -41,9 +42,9 @@ pub async fn rotor(
     request_body = FreeDecayRequest,
     responses(
         (status = 200, description = "Natural frequency, damping, decrement, amplitude and phase", body = FreeDecay),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 422, description = "Too few samples, a non-positive step, or samples that do not decay", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn free_decay(
     State(state): State<AppState>,
@@ -56,9 +57,9 @@ pub async fn free_decay(
     request_body = ModelRequest,
     responses(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 422, description = "Non-square or asymmetric matrix, a shape of the wrong length, too few modes", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn model(
     State(state): State<AppState>,

@@ -6,14 +6,14 @@ use axum::Json;
 use crate::balancing::acceptance::{self, ResidualCheck, ResidualRequest};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
+use crate::http::responses::{BodyRefused, MalformedJson};
 
 #[utoipa::path(post, path = "/api/v1/residual-unbalance", tag = "acceptance",
     request_body = ResidualRequest,
     responses(
         (status = 200, description = "The exact residual unbalance, the allowable, pass/fail and API's worksheet beside it", body = ResidualCheck),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        MalformedJson,
+        BodyRefused,
         (status = 422, description = "Invalid request (fewer than 4 positions, positions not equally spaced, a value out of range), naming the field", body = ErrorBody),
     ))]
 pub async fn check(

@@ -13,6 +13,7 @@ use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::{JsonBody, OptionsBody};
 use crate::http::headers::{self, Page};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, SolverBusy};
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -59,11 +60,10 @@ async fn solve_blocking(
     request_body = SolveRequest,
     responses(
         (status = 200, description = "The correction", body = Solution),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        MalformedJson,
+        BodyRefused,
         (status = 422, description = "Invalid or unsolvable session or options, or a session over the size limits (`too_large`)", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn solve(
     State(state): State<AppState>,
@@ -85,12 +85,11 @@ pub async fn solve(
     request_body(content = SolveOptions, description = "Solve options; an empty body means the defaults"),
     responses(
         (status = 201, description = "Solved and stored", body = StoredSolution),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        BodyRefused,
         (status = 422, description = "Invalid options, or the session cannot be solved yet", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn create_solution(
     State(state): State<AppState>,
@@ -128,8 +127,7 @@ pub async fn create_solution(
     responses(
         (status = 200, description = "A page of the stored solutions, oldest first (limit 1 to 100, default 20)", body = Vec<StoredSolution>,
          headers(("X-Total-Count" = i64, description = "Solutions in all"))),
-        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
-        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+        PageRefused,
         (status = 404, description = "No such session", body = ErrorBody),
     ))]
 pub async fn list_solutions(

@@ -7,6 +7,7 @@ use axum::Json;
 use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
+use crate::http::responses::{BodyRefused, MalformedJson, SolverBusy};
 use crate::http::solve::within_solve_request;
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
@@ -30,11 +31,10 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
 `place` and `weights` say which.",
     responses(
         (status = 200, description = "One suggestion per selected plane", body = TrialResponse),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        MalformedJson,
+        BodyRefused,
         (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn trial_weights(
     State(state): State<AppState>,

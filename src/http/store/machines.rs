@@ -19,6 +19,7 @@ use crate::db::machines::{
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::invalid_query;
+use crate::http::responses::{MalformedJson, PageRefused, SolverBusy};
 use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -58,7 +59,7 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
     responses(
         (status = 201, description = "Stored", body = machines::Machine,
          headers(("Location" = String, description = "/api/v1/machines/{id}"))),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 409, description = "A machine with this id exists", body = ErrorBody),
         (status = 422, description = "Invalid machine", body = ErrorBody),
     ))]
@@ -80,8 +81,7 @@ pub async fn create(
     params(ListParams),
     responses(
         (status = 200, description = "A page of machines, newest first", body = MachineList),
-        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
-        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+        PageRefused,
     ))]
 pub async fn list(
     State(state): State<AppState>,
@@ -134,10 +134,10 @@ pub struct PoolRequest {
     request_body = PoolRequest,
     responses(
         (status = 201, description = "A new coefficient version pooled from the sessions", body = StoredCoefficients),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
-        (status = 503, description = "Every solver busy: retry after `Retry-After` seconds", body = ErrorBody),
+        SolverBusy,
     ))]
 pub async fn pool_coefficients(
     State(state): State<AppState>,

@@ -16,6 +16,7 @@ use crate::db::{self, RunVersion};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, Page};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused};
 use crate::http::sessions::validate_stored;
 use crate::http::store::created::CreatedAnswer;
 use crate::http::AppState;
@@ -64,11 +65,10 @@ fn encode_segment(s: &str) -> String {
     responses(
         (status = 201, description = "Appended as version 1", body = RunStored,
          headers(("Location" = String, description = "/api/v1/sessions/{id}/runs/{run_id}"))),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 409, description = "The session already has a run with this id", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        BodyRefused,
         (status = 422, description = "The session with this run is invalid", body = ErrorBody),
     ))]
 pub async fn append(
@@ -106,10 +106,9 @@ pub async fn append(
     request_body = Run,
     responses(
         (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
+        MalformedJson,
         (status = 404, description = "No such session or run", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        BodyRefused,
         (status = 412, description = "If-Match names a version that is no longer the run's current one", body = ErrorBody),
         (status = 422, description = "Invalid, or the body's id differs from the path's", body = ErrorBody),
     ))]
@@ -162,8 +161,7 @@ pub async fn get(
     responses(
         (status = 200, description = "A page of the run's versions, oldest first (limit 1 to 1000, default 1000)", body = Vec<RunVersion>,
          headers(("X-Total-Count" = i64, description = "Versions in all"))),
-        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
-        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+        PageRefused,
         (status = 404, description = "No such session or run", body = ErrorBody),
     ))]
 pub async fn versions(

@@ -15,6 +15,7 @@ use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers;
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused};
 use crate::http::store::created::CreatedAnswer;
 use crate::http::work::check_blocking;
 use crate::http::AppState;
@@ -67,9 +68,8 @@ pub fn validate_stored(session: &Session) -> Result<(), InputError> {
     responses(
         (status = 201, description = "Stored", body = Created,
          headers(("Location" = String, description = "/api/v1/sessions/{id}"))),
-        (status = 400, description = "Malformed JSON or unknown field", body = ErrorBody),
-        (status = 413, description = "Body over the limit", body = ErrorBody),
-        (status = 415, description = "Not application/json", body = ErrorBody),
+        MalformedJson,
+        BodyRefused,
         (status = 422, description = "Invalid session, over the size limits (`too_large`), or an Idempotency-Key used for another request", body = ErrorBody),
         (status = 503, description = "The database cannot be written", body = ErrorBody),
         (status = 507, description = "The disk is full; nothing was stored", body = ErrorBody),
@@ -99,8 +99,7 @@ pub async fn create(
     params(ListParams),
     responses(
         (status = 200, description = "A page of sessions, newest first", body = SessionList),
-        (status = 400, description = "Unknown or malformed query parameter", body = ErrorBody),
-        (status = 422, description = "limit or offset out of range", body = ErrorBody),
+        PageRefused,
     ))]
 pub async fn list(
     State(state): State<AppState>,

@@ -1,0 +1,44 @@
+//! The error rows of the OpenAPI document that several endpoints share,
+//! declared once (`utoipa::IntoResponses`) and listed in each endpoint's
+//! `responses(...)` beside its own rows: what a JSON body, a page's query
+//! and the solve slots can be refused with. The document lists a status once
+//! per operation, so an endpoint whose refusal reads differently (its own
+//! 422, say) keeps its own row for it.
+
+use utoipa::IntoResponses;
+
+use super::error::ErrorBody;
+
+/// A request body that is not JSON, or JSON with an unknown field
+/// (`extract::JsonBody`).
+#[derive(IntoResponses)]
+#[response(status = 400, description = "Malformed JSON or unknown field")]
+pub struct MalformedJson(pub ErrorBody);
+
+/// A request body over the body limit, or without `Content-Type:
+/// application/json`: the endpoints that name these themselves rather than
+/// leave them to the edge's general rows (`openapi::EdgeAnswers`).
+#[derive(IntoResponses)]
+pub enum BodyRefused {
+    #[response(status = 413, description = "Body over the limit")]
+    TooLarge(ErrorBody),
+    #[response(status = 415, description = "Not application/json")]
+    NotJson(ErrorBody),
+}
+
+/// A paged list's query (`limit`, `offset`) refused.
+#[derive(IntoResponses)]
+pub enum PageRefused {
+    #[response(status = 400, description = "Unknown or malformed query parameter")]
+    Malformed(ErrorBody),
+    #[response(status = 422, description = "limit or offset out of range")]
+    OutOfRange(ErrorBody),
+}
+
+/// Every solve slot taken (`http::work`).
+#[derive(IntoResponses)]
+#[response(
+    status = 503,
+    description = "Every solver busy: retry after `Retry-After` seconds"
+)]
+pub struct SolverBusy(pub ErrorBody);

@@ -31,6 +31,27 @@ pub struct Uncertainty {
     /// Covariance of the correction's real and imaginary parts, g², with the
     /// real axis at angle 0 and the imaginary axis at 90° in the session's `angle_direction`.
     pub covariance_g2: [[f64; 2]; 2],
+    /// The errors-in-variables estimate of the exact correction (method 8.3):
+    /// the correction less the second-order bias that the coefficients'
+    /// noise gives least squares. Present only where that bias is estimated
+    /// (least squares without a binding bound, more rows than planes, and the
+    /// noise stated in the options or measured by `samples`). It is an
+    /// estimate, not the weight to fit: unbiased over many jobs, it leaves
+    /// more vibration than the correction itself in most single jobs at one
+    /// speed (method 8, "What the bias correction costs in vibration"). The
+    /// region above is centred on the correction and includes this bias
+    /// (method 8.11).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bias_corrected: Option<BiasCorrected>,
+}
+
+/// A plane's errors-in-variables estimate (method 8.3), as a weight.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+pub struct BiasCorrected {
+    /// Grams, at the plane's fitting radius.
+    pub mass_g: f64,
+    /// In the session's `angle_direction`.
+    pub angle_deg: f64,
 }
 
 /// The correction weight for one plane.

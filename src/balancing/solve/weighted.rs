@@ -30,8 +30,15 @@ pub struct Fit<'a> {
     pub planes: Vec<usize>,
     /// Planes left out by `drop_dependent_planes`.
     pub dropped: Vec<usize>,
-    /// Correction `C`, one entry per plane of `planes`.
+    /// Correction `C`, one entry per plane of `planes`: the minimiser of the
+    /// objective (least squares 3.2, or the cone programs of method 4).
     pub c: DVector<Complex64>,
+    /// The errors-in-variables estimate `C*` of the exact correction (method
+    /// 8.3), where the bias is removed (`uncertainty::debiased`); `None`
+    /// elsewhere. Reported beside `c`, never in its place: the contract's
+    /// correction minimises the objective, and the options' noise is for the
+    /// confidence regions only.
+    pub c_unbiased: Option<DVector<Complex64>>,
     /// Predicted vibration `R = Y0 + W C` (3.1) at every row.
     pub residual: DVector<Complex64>,
     /// The weighted matrix `G W` of the used rows and `planes`, factored once
@@ -76,8 +83,8 @@ pub fn least_squares(
 ///
 /// Extension point: the objective and mass bounds of `options` choose the
 /// method here; plain least squares is the default. The errors-in-variables
-/// bias is removed after, by `uncertainty::debiased`, only where the noise is
-/// evidenced (issue 12).
+/// estimate is formed after, by `uncertainty::debiased`, only where the noise
+/// is evidenced, and reported beside this correction (issue 12).
 fn correction(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
@@ -188,9 +195,10 @@ pub fn solve_kept<'a>(
     };
     let (c, warnings) = correction(&a, &b, &factor, options, session, &planes)?;
     let cov = uncertainty::reading_covariances(&checked, noise);
-    // Errors-in-variables bias removed where the noise is evidenced (issue 12).
-    let c = match supplied {
-        None => uncertainty::debiased(
+    // The errors-in-variables estimate where the noise is evidenced (issue
+    // 12), reported beside the correction, which stays the minimiser.
+    let c_unbiased = match supplied {
+        None => Some(uncertainty::debiased(
             &checked,
             &cov,
             &selection.rows,
@@ -198,9 +206,10 @@ pub fn solve_kept<'a>(
             &planes,
             options,
             warnings.iter().any(|w| w.code == "mass_limit_active"),
-            c,
-        ),
-        Some(_) => c,
+            c.clone(),
+        ))
+        .filter(|d| d != &c),
+        Some(_) => None,
     };
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
     let residual = checked.y.column(0) + &w_used * &c;
@@ -213,6 +222,7 @@ pub fn solve_kept<'a>(
         planes,
         dropped,
         c,
+        c_unbiased,
         residual,
         factor,
         t_pinv,

@@ -94,6 +94,7 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
         mass_g: Some(mass_g),
         angle_deg,
         covariance_g2: [[cov[(0, 0)], off], [off, cov[(1, 1)]]],
+        bias_corrected: None,
     }
 }
 

@@ -180,11 +180,19 @@ impl Row {
     /// The 95 % bound of the row's remaining amplitude (step 3, the
     /// covariance scaled by step 4's calibration).
     pub fn amplitude_95(&self, r_hat: Complex64, pooled: Pooled) -> f64 {
+        self.amplitude_95_moved(r_hat, pooled, Complex64::new(0.0, 0.0))
+    }
+
+    /// [`Self::amplitude_95`] with the distribution's centre moved by
+    /// `shift`: a part of the remaining vibration that the prediction `R̂`
+    /// does not hold, estimated beside it (the fitted correction's
+    /// errors-in-variables bias on this row, `Ŵ_a (Ĉ − C*)`, method 8.12).
+    pub fn amplitude_95_moved(&self, r_hat: Complex64, pooled: Pooled, shift: Complex64) -> f64 {
         match self {
-            Row::Exact(su) => amplitude_95(r_hat, su),
+            Row::Exact(su) => amplitude_95(r_hat + shift, su),
             Row::Parts(m, eps, k_mat) => {
                 let s = pooled.shrink.clamp(0.0, 1.0);
-                let centre = m + (v2(r_hat) - m) * s;
+                let centre = m + (v2(r_hat) - m) * s + v2(shift);
                 let cov = (eps + k_mat * s) * pooled.scale.max(0.0);
                 amplitude_95(Complex64::new(centre.x, centre.y), &sym(&cov))
             }

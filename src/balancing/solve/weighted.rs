@@ -34,11 +34,11 @@ pub struct Fit<'a> {
     /// objective (least squares 3.2, or the cone programs of method 4).
     pub c: DVector<Complex64>,
     /// The errors-in-variables estimate `C*` of the exact correction (method
-    /// 8.3), where the bias is removed (`uncertainty::debiased`); `None`
-    /// elsewhere. Reported beside `c`, never in its place: the contract's
-    /// correction minimises the objective, and the options' noise is for the
-    /// confidence regions only.
-    pub c_unbiased: Option<DVector<Complex64>>,
+    /// 8.3) and its bias map, where it is formed (`uncertainty::debiased`);
+    /// `None` elsewhere. Reported beside `c`, never in its place: the
+    /// contract's correction minimises the objective, and the options' noise
+    /// is for the confidence regions only.
+    pub unbiased: Option<uncertainty::Unbiased>,
     /// Predicted vibration `R = Y0 + W C` (3.1) at every row.
     pub residual: DVector<Complex64>,
     /// The weighted matrix `G W` of the used rows and `planes`, factored once
@@ -197,8 +197,8 @@ pub fn solve_kept<'a>(
     let cov = uncertainty::reading_covariances(&checked, noise);
     // The errors-in-variables estimate where the noise is evidenced (issue
     // 12), reported beside the correction, which stays the minimiser.
-    let c_unbiased = match supplied {
-        None => Some(uncertainty::debiased(
+    let unbiased = match supplied {
+        None => uncertainty::debiased(
             &checked,
             &cov,
             &selection.rows,
@@ -206,9 +206,8 @@ pub fn solve_kept<'a>(
             &planes,
             options,
             warnings.iter().any(|w| w.code == "mass_limit_active"),
-            c.clone(),
-        ))
-        .filter(|d| d != &c),
+            &c,
+        ),
         Some(_) => None,
     };
     let w_used = DMatrix::from_fn(w.nrows(), planes.len(), |i, j| w[(i, planes[j])]);
@@ -222,7 +221,7 @@ pub fn solve_kept<'a>(
         planes,
         dropped,
         c,
-        c_unbiased,
+        unbiased,
         residual,
         factor,
         t_pinv,

@@ -2,10 +2,9 @@
 //! reading's covariance, propagates it, and fills the solution's `uncertainty`,
 //! `amplitude_95`, `trial_effect_snr` and the noise side of `trial_effect_small`.
 
-use nalgebra::{DVector, Matrix2, Vector2};
+use nalgebra::Matrix2;
 use num_complex::Complex64;
 
-use super::remaining::Row;
 use super::{
     correction_uncertainty, reading_noise, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG,
     MAX_AMPLITUDE_NOISE_PCT, MAX_PHASE_NOISE_DEG,
@@ -140,8 +139,15 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         w: &fit.w,
         factor: &fit.factor,
     });
-    let prop = super::propagate(&problem, fit.c_unbiased.as_ref().unwrap_or(&fit.c), known);
+    let c_star = fit.unbiased.as_ref().map(|u| &u.c);
+    let prop = super::propagate(&problem, c_star.unwrap_or(&fit.c), known);
 
+    // The region of the fitted correction where `C*` is formed (8.11): the
+    // map form with two or more complex degrees of freedom over the planes.
+    let biased = fit.unbiased.as_ref().map(|u| {
+        let map_form = sel.rows.len() >= fit.planes.len() + 2;
+        super::bias::Region::new(u, &fit.c, &prop.correction_full, map_form)
+    });
     let undetermined = undetermined(&fit.factor);
     let kappas = super::kappa(fit, &prop);
     // Covariances estimated from samples: Hotelling's quantile for their
@@ -158,16 +164,16 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         .zip(&dofs)
         .enumerate()
     {
-        let mut widened = super::second_order(cc, k) * super::dof::widening(nu);
+        // (8.4) and, for samples, Hotelling's widening (8.5).
+        let scale = (1.0 + k.unwrap_or(0.0)) * super::dof::widening(nu);
+        let mut widened = cc * scale;
         // Where the errors-in-variables estimate `C*` (8.3) is formed, the
         // correction `c` (the minimiser) errs by its bias as well as its
-        // scatter: the region around `c` takes the estimated bias `c − C*`
-        // as a mean square error, `Σ + b bᵀ` (method 8.11).
-        let unbiased = fit.c_unbiased.as_ref().map(|cu| cu[col]);
-        if let Some(cu) = unbiased {
-            let b = Vector2::new(c.re - cu.re, c.im - cu.im);
-            widened += b * b.transpose();
+        // scatter: the region around `c` is its mean square error (8.11).
+        if let Some(region) = &biased {
+            widened = region.plane(col, &widened, scale);
         }
+        let unbiased = c_star.map(|cu| cu[col]);
         let mut u = correction_uncertainty(c, &widened, conv);
         u.bias_corrected = unbiased.map(|cu| {
             let (mass_g, angle_deg) = weight_out(conv, cu);
@@ -191,11 +197,8 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     }
     // The remaining vibration's bound, for the correction that is fitted:
     // its own noise at `Ĉ` (a second propagation where `C*` is formed).
-    let at_fitted = fit
-        .c_unbiased
-        .as_ref()
-        .map(|_| super::propagate(&problem, &fit.c, known));
-    fill_amplitude_95(fit, cov, at_fitted.as_ref().unwrap_or(&prop), solution);
+    let at_fitted = c_star.map(|_| super::propagate(&problem, &fit.c, known));
+    super::remaining::fitted::fill(fit, cov, at_fitted.as_ref().unwrap_or(&prop), solution);
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {
         let tau = checked
@@ -248,94 +251,5 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             ),
             plane: None,
         });
-    }
-}
-
-/// `amplitude_95` of every row (issue 12, `remaining`; method 8.6–8.9, 8.11),
-/// from `prop`, the noise propagated at the fitted correction `Ĉ`.
-///
-/// The bound is formed around the fit's own prediction `R̂ = Ŷ0 + Ŵ Ĉ`, the
-/// least-squares residual: `R − R̂ = −(dY0_a + dW_a Ĉ)` holds exactly for the
-/// correction that goes on the rotor, so the row's own noise is taken at
-/// `Ĉ`, not at `C*`. What the first-order model leaves out is the mean of
-/// `Ĉ − C`, the errors-in-variables bias `b` (method 8.3): the remaining
-/// vibration is `R = r + W_a dC + W_a b`, and `R̂ = (I − P̂) Ŷ0` is blind to
-/// it (the residual of a least-squares fit does not depend on how its
-/// solution is biased). Where `C*` is formed the centre is moved by the
-/// estimate `Ŵ_a (Ĉ − C*)` (method 8.12).
-fn fill_amplitude_95(
-    fit: &Fit,
-    cov: &[Vec<Matrix2<f64>>],
-    prop: &super::Propagation,
-    solution: &mut Solution,
-) {
-    let sel = &fit.selection;
-    let r_hat = &fit.residual;
-    let bias: Option<DVector<Complex64>> = fit.c_unbiased.as_ref().map(|cu| {
-        let b = &fit.c - cu;
-        DVector::from_fn(r_hat.len(), |a, _| {
-            fit.planes
-                .iter()
-                .zip(b.iter())
-                .map(|(&j, bj)| fit.w[(a, j)] * bj)
-                .sum()
-        })
-    });
-    // Its shrinkage from the rows of the fit.
-    let dof = sel.rows.len().saturating_sub(fit.planes.len());
-    let shrink = super::residual_shrinkage(
-        sel.rows.iter().map(|&a| (r_hat[a], &prop.prediction[a])),
-        dof,
-    );
-    // Each row conditioned on all the used rows' predictions (method 8.8,
-    // 8.9); with one complex degree of freedom over the planes (nothing more
-    // to learn from the other rows), or where that cannot be formed, on its
-    // own (8.6). Once per row for the calibration and the bound alike
-    // (issue 15).
-    let joint = super::remaining::joint::Inputs {
-        w: &fit.w,
-        planes: &fit.planes,
-        used_rows: &sel.rows,
-        r_hat,
-        own: &prop.residual,
-        correction_full: &prop.correction_full,
-        // The product term with estimated coefficients (`T⁺` known).
-        omega_lambda: fit
-            .t_pinv
-            .is_some()
-            .then_some((&prop.omega, &prop.lambda[..])),
-        cov,
-    };
-    let rows: Vec<Row> = super::remaining::joint::rows(&joint).unwrap_or_else(|| {
-        (0..r_hat.len())
-            .map(|a| {
-                Row::own(
-                    r_hat[a],
-                    &prop.prediction[a],
-                    &prop.through_correction[a],
-                    &prop.remaining_cross[a],
-                )
-            })
-            .collect()
-    });
-    // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
-    let ks: Vec<f64> = sel
-        .rows
-        .iter()
-        .filter_map(|&a| rows[a].sensitivity())
-        .collect();
-    let pooled = super::remaining::Pooled {
-        shrink,
-        scale: super::remaining::calibrated_scale(&ks, dof, shrink),
-    };
-    for (a, ((res, &r), row)) in solution
-        .predicted_residual
-        .iter_mut()
-        .zip(r_hat.iter())
-        .zip(&rows)
-        .enumerate()
-    {
-        let shift = bias.as_ref().map_or(Complex64::new(0.0, 0.0), |b| b[a]);
-        res.amplitude_95 = Some(row.amplitude_95_moved(r, pooled, shift));
     }
 }

@@ -93,6 +93,7 @@ use num_complex::Complex64;
 use super::amplitude_95;
 
 mod calibrate;
+pub mod fitted;
 pub mod joint;
 mod mgs;
 pub use calibrate::calibrated_scale;

@@ -55,6 +55,9 @@ use super::propagate::{moments, svd_parts, Problem};
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::validate::Checked;
 
+mod region;
+pub use region::Region;
+
 /// Relative singular value of `A` below which the fit is treated as rank
 /// deficient and left as the minimum-norm least-squares answer.
 const RANK_TOLERANCE: f64 = 1e-10;
@@ -185,9 +188,21 @@ impl Expansion {
     }
 }
 
-/// The correction `c` of the used `rows` (with `weights`) and `planes`, less
-/// its second-order bias where the noise is evidenced (see the module doc);
-/// otherwise `c` unchanged. `bounded`: a mass bound is binding.
+/// The errors-in-variables estimate beside a least-squares correction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unbiased {
+    /// `C*`, the fixed point of (8.3), one entry per used plane.
+    pub c: DVector<Complex64>,
+    /// `B`, the complex-linear part of the bias `b(C) = B C + b₀` (q × q):
+    /// with `Ĉ = C* + b(C*)`, `I + B` is how `Ĉ` moves with `C*` (method
+    /// 8.11's mean square error).
+    pub map: DMatrix<Complex64>,
+}
+
+/// The errors-in-variables estimate of the correction `c` of the used `rows`
+/// (with `weights`) and `planes`: `c` less its second-order bias, where the
+/// noise is evidenced (see the module doc); `None` where it is not formed or
+/// does not differ from `c`. `bounded`: a mass bound is binding.
 #[allow(clippy::too_many_arguments)]
 pub fn debiased(
     checked: &Checked,
@@ -197,15 +212,15 @@ pub fn debiased(
     planes: &[usize],
     options: &SolveOptions,
     bounded: bool,
-    c: DVector<Complex64>,
-) -> DVector<Complex64> {
+    c: &DVector<Complex64>,
+) -> Option<Unbiased> {
     let least_squares = options.objective.unwrap_or_default() == Objective::LeastSquares;
     let stated = options.amplitude_noise_pct.is_some() || options.phase_noise_deg.is_some();
     let measured = rows
         .iter()
         .any(|&a| (0..checked.runs.len()).any(|k| checked.reading(a, k).samples.is_some()));
     if !least_squares || bounded || !(stated || measured) {
-        return c;
+        return None;
     }
     let problem = Problem {
         t: &checked.t,
@@ -215,14 +230,10 @@ pub fn debiased(
         row_weights: weights,
         used_planes: planes,
     };
-    let Some(expansion) = Expansion::new(&problem) else {
-        return c;
-    };
+    let expansion = Expansion::new(&problem)?;
     let finite = |b: &DVector<Complex64>| b.iter().all(|z| z.re.is_finite() && z.im.is_finite());
     let bias_at = |at: &DVector<Complex64>| Some(expansion.at(at)).filter(finite);
-    let Some(first) = bias_at(&c) else {
-        return c;
-    };
+    let first = bias_at(c)?;
     // The bias is evaluated at an estimate that is itself attenuated, which
     // leaves `O(δ²)` of it (δ the attenuation, `κ/(1+κ)` over many rows): the
     // estimate is the fixed point `C* = Ĉ − b(C*)` (method 8.3; Fuller 1987 §2.2's
@@ -231,11 +242,11 @@ pub fn debiased(
     // Not solved directly (`b` is affine in `C`): where the iteration does
     // not contract, `ÂᴴÂ − M` is near singular and the exact fixed point
     // scatters without bound (method 8.3, the one-speed note).
-    let mut est = &c - &first;
+    let mut est = c - &first;
     let mut step = first.norm();
     for _ in 0..FIXED_POINT_STEPS {
         let Some(b) = bias_at(&est) else { break };
-        let next = &c - b;
+        let next = c - b;
         let moved = (&next - &est).norm();
         // NaN compares false: it stops the iteration too.
         if moved.partial_cmp(&(CONTRACTION * step)) != Some(std::cmp::Ordering::Less) {
@@ -244,5 +255,18 @@ pub fn debiased(
         est = next;
         step = moved;
     }
-    est
+    if &est == c {
+        return None;
+    }
+    // `B` column by column: `b` is affine, so differences are exact.
+    let q = c.len();
+    let zero = DVector::<Complex64>::zeros(q);
+    let b0 = bias_at(&zero)?;
+    let mut map = DMatrix::<Complex64>::zeros(q, q);
+    for j in 0..q {
+        let mut unit = zero.clone();
+        unit[j] = Complex64::from(1.0);
+        map.set_column(j, &(bias_at(&unit)? - &b0));
+    }
+    Some(Unbiased { c: est, map })
 }

@@ -1,0 +1,94 @@
+//! `amplitude_95` of every row for the correction that is fitted (issue 12;
+//! method 8.6–8.9, 8.12): the job's pieces gathered for [`super::Row`].
+
+use nalgebra::{DVector, Matrix2};
+use num_complex::Complex64;
+
+use super::Row;
+use crate::balancing::solution::Solution;
+use crate::balancing::solve::Fit;
+use crate::balancing::uncertainty::Propagation;
+
+/// `amplitude_95` of every row (issue 12, `remaining`; method 8.6–8.9, 8.12),
+/// from `prop`, the noise propagated at the fitted correction `Ĉ`.
+///
+/// The bound is formed around the fit's own prediction `R̂ = Ŷ0 + Ŵ Ĉ`, the
+/// least-squares residual: `R − R̂ = −(dY0_a + dW_a Ĉ)` holds exactly for the
+/// correction that goes on the rotor, so the row's own noise is taken at
+/// `Ĉ`, not at `C*`. What the first-order model leaves out is the mean of
+/// `Ĉ − C`, the errors-in-variables bias `b` (method 8.3): the remaining
+/// vibration is `R = r + W_a dC + W_a b`, and `R̂ = (I − P̂) Ŷ0` is blind to
+/// it (the residual of a least-squares fit does not depend on how its
+/// solution is biased). Where `C*` is formed the centre is moved by the
+/// estimate `Ŵ_a (Ĉ − C*)` (method 8.12).
+pub fn fill(fit: &Fit, cov: &[Vec<Matrix2<f64>>], prop: &Propagation, solution: &mut Solution) {
+    let sel = &fit.selection;
+    let r_hat = &fit.residual;
+    let bias: Option<DVector<Complex64>> = fit.unbiased.as_ref().map(|u| {
+        let b = &fit.c - &u.c;
+        DVector::from_fn(r_hat.len(), |a, _| {
+            fit.planes
+                .iter()
+                .zip(b.iter())
+                .map(|(&j, bj)| fit.w[(a, j)] * bj)
+                .sum()
+        })
+    });
+    // Its shrinkage from the rows of the fit.
+    let dof = sel.rows.len().saturating_sub(fit.planes.len());
+    let shrink = super::residual_shrinkage(
+        sel.rows.iter().map(|&a| (r_hat[a], &prop.prediction[a])),
+        dof,
+    );
+    // Each row conditioned on all the used rows' predictions (method 8.8,
+    // 8.9); with one complex degree of freedom over the planes (nothing more
+    // to learn from the other rows), or where that cannot be formed, on its
+    // own (8.6). Once per row for the calibration and the bound alike
+    // (issue 15).
+    let joint = super::joint::Inputs {
+        w: &fit.w,
+        planes: &fit.planes,
+        used_rows: &sel.rows,
+        r_hat,
+        own: &prop.residual,
+        correction_full: &prop.correction_full,
+        // The product term with estimated coefficients (`T⁺` known).
+        omega_lambda: fit
+            .t_pinv
+            .is_some()
+            .then_some((&prop.omega, &prop.lambda[..])),
+        cov,
+    };
+    let rows: Vec<Row> = super::joint::rows(&joint).unwrap_or_else(|| {
+        (0..r_hat.len())
+            .map(|a| {
+                Row::own(
+                    r_hat[a],
+                    &prop.prediction[a],
+                    &prop.through_correction[a],
+                    &prop.remaining_cross[a],
+                )
+            })
+            .collect()
+    });
+    // Its level calibrated for the weight's scatter (Carlin & Gelfand 1990).
+    let ks: Vec<f64> = sel
+        .rows
+        .iter()
+        .filter_map(|&a| rows[a].sensitivity())
+        .collect();
+    let pooled = super::Pooled {
+        shrink,
+        scale: super::calibrated_scale(&ks, dof, shrink),
+    };
+    for (a, ((res, &r), row)) in solution
+        .predicted_residual
+        .iter_mut()
+        .zip(r_hat.iter())
+        .zip(&rows)
+        .enumerate()
+    {
+        let shift = bias.as_ref().map_or(Complex64::new(0.0, 0.0), |b| b[a]);
+        res.amplitude_95 = Some(row.amplitude_95_moved(r, pooled, shift));
+    }
+}

@@ -79,15 +79,26 @@ fn real_form(m: &DMatrix<Complex64>) -> DMatrix<f64> {
     })
 }
 
-/// A symmetric 2×2 matrix with its negative eigenvalues set to 0.
+/// A symmetric 2×2 matrix with its negative eigenvalues set to 0, in closed
+/// form (no iteration; with `λ₁ > 0 > λ₂` the part is `λ₁ (M − λ₂ I) / (λ₁ −
+/// λ₂)`, the projector on `λ₁`'s axis). A matrix that is not finite is
+/// returned as it is.
 fn positive_part(m: &Matrix2<f64>) -> Matrix2<f64> {
-    let e = ((m + m.transpose()) * 0.5).symmetric_eigen();
-    let mut out = Matrix2::zeros();
-    for i in 0..2 {
-        let v = e.eigenvectors.column(i);
-        out += v * v.transpose() * e.eigenvalues[i].max(0.0);
+    let m = (m + m.transpose()) * 0.5;
+    if !m.iter().all(|x| x.is_finite()) {
+        return m;
     }
-    out
+    let (a, b, d) = (m[(0, 0)], m[(0, 1)], m[(1, 1)]);
+    let mid = 0.5 * (a + d);
+    let rad = (0.5 * (a - d)).hypot(b);
+    let (hi, lo) = (mid + rad, mid - rad);
+    if lo >= 0.0 {
+        m
+    } else if hi <= 0.0 {
+        Matrix2::zeros()
+    } else {
+        (m - Matrix2::identity() * lo) * (hi / (hi - lo))
+    }
 }
 
 #[cfg(test)]
@@ -124,6 +135,11 @@ mod tests {
         // One axis of each sign: only the positive one is kept.
         let mixed = Matrix2::new(1.0, 0.0, 0.0, -4.0);
         assert!((positive_part(&mixed) - Matrix2::new(1.0, 0.0, 0.0, 0.0)).norm() < 1e-12);
+        // Off the axes: eigenvalues 3 and −1 along (1, 1)/√2 and (1, −1)/√2.
+        let turned = Matrix2::new(1.0, 2.0, 2.0, 1.0);
+        assert!((positive_part(&turned) - Matrix2::new(1.5, 1.5, 1.5, 1.5)).norm() < 1e-12);
+        // Not finite: returned as it is, never an endless iteration.
+        assert!(positive_part(&Matrix2::new(f64::NAN, 0.0, 0.0, 1.0))[(0, 0)].is_nan());
     }
 
     #[test]

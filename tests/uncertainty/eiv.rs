@@ -207,16 +207,18 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
 }
 
 /// Plane `j`'s errors-in-variables estimate (`uncertainty.bias_corrected`),
-/// as a complex mass in the session's angle convention; the correction itself
-/// where the solve gives none.
+/// as a complex mass in the session's angle convention. Every job here has
+/// more rows than planes and its noise stated or measured, so the estimate
+/// is always formed: its absence fails the test rather than letting the
+/// least-squares correction stand in for it.
 fn unbiased(sol: &Solution, j: usize) -> Complex64 {
     let c = &sol.corrections[j];
-    let (m, a) = c
+    let b = c
         .uncertainty
         .as_ref()
         .and_then(|u| u.bias_corrected.as_ref())
-        .map_or((c.mass_g, c.angle_deg), |b| (b.mass_g, b.angle_deg));
-    Complex64::from_polar(m, a.to_radians())
+        .unwrap_or_else(|| panic!("plane {}: no bias_corrected", c.plane));
+    Complex64::from_polar(b.mass_g, b.angle_deg.to_radians())
 }
 
 /// Per plane: Hotelling's `T²` of the mean error, and the bias in sd it

@@ -7,7 +7,7 @@ import { banner, markServerError } from "./fields.js";
 import { fmt, fmtAngle, angleDiff, unitLabel } from "./num.js";
 import { api } from "./api.js";
 import { state, changed } from "./state.js";
-import { plainWarning, doubt } from "./words.js";
+import { plainWarning, doubt, UNBIASED_WORDS } from "./words.js";
 import { optionsPanel, solveOptions } from "./options.js";
 import { answerParts } from "./answer.js";
 
@@ -32,6 +32,18 @@ function uncertaintyParts(c) {
   return [`${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g`, `${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`];
 }
 
+/**
+ * The correction without the pull towards zero that noisy coefficients give
+ * least squares (`uncertainty.bias_corrected`, C* of method.md 8.11), as one
+ * short line under the 95 % figures; nothing when the service gives none
+ * (the noise neither stated nor measured, min-max, a mass limit reached).
+ */
+function unbiasedLine(c) {
+  const b = c.uncertainty && c.uncertainty.bias_corrected;
+  if (!b) return "";
+  return h("div", { class: "corr-unbiased", title: UNBIASED_WORDS }, `without the noise's pull: ${fmt(b.mass_g, 1)} g at ${fmtAngle(b.angle_deg)}`);
+}
+
 function angleWords(conventions) {
   return conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
 }
@@ -47,7 +59,7 @@ export function correctionsTable(solution) {
       h("th", { class: "corr-plane" }, c.plane),
       h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g, 1)} g`),
       h("td", { class: "corr-angle" }, nothing ? "–" : fmtAngle(c.angle_deg)),
-      h("td", { class: "corr-uncertainty" }, c.uncertainty ? uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]) : "–"),
+      h("td", { class: "corr-uncertainty" }, c.uncertainty ? [uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]), unbiasedLine(c)] : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
       h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
       );

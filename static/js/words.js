@@ -24,6 +24,13 @@ const PLAIN = {
   fit_not_proven: () => ["The choice of kit weights is the best found in the time allowed, not proven the best.", "It is usually good enough; check with a run."],
 };
 
+/**
+ * The title of the "without the noise's pull" line under a correction's 95 %
+ * figures: `uncertainty.bias_corrected`, the errors-in-variables estimate C*
+ * (method.md 8.11, session 13), beside the least-squares weight that is fitted.
+ */
+export const UNBIASED_WORDS = "Noisy readings pull the computed weight towards zero; this is the estimate with that pull removed. Fit the weight in the Mass and Angle columns, which leaves less vibration; a large difference between the two means the trial weight was small against the noise.";
+
 /** `{what, todo}` for a warning. */
 export function plainWarning(w) {
   const f = PLAIN[w.code];

@@ -50,6 +50,10 @@ export function resultsCsv() {
   for (const c of sol.corrections) {
     const u = c.uncertainty;
     out.push(["correction", c.plane, "", c.mass_g, c.angle_deg, c.unbalance_gmm ?? "", u ? u.mass_g[0] : "", u ? u.mass_g[1] : "", "", "", "", ""]);
+    // The errors-in-variables estimate C* beside it (method.md 8.11), when the
+    // noise is stated or measured: a row of its own, in the same columns.
+    const b = u && u.bias_corrected;
+    if (b) out.push(["bias_corrected", c.plane, "", b.mass_g, b.angle_deg, "", "", "", "", "", "", ""]);
   }
   for (const r of sol.predicted_residual) {
     out.push(["residual", r.sensor, r.speed_rpm, "", "", "", "", "", r.amplitude_before, r.amplitude, r.amplitude_95 ?? "", r.phase_deg]);

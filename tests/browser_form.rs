@@ -1,7 +1,8 @@
 //! End-to-end tests of the web form in a real headless Chromium: a whole
 //! balancing job typed key by key, reopening after a reload, user text that
-//! looks like HTML, and errors shown at their field. Screenshots go to
-//! `target/screenshots/`.
+//! looks like HTML, errors shown at their field, and the correction without
+//! the noise's pull beside the fitted one (browser/noise.rs). Screenshots go
+//! to `target/screenshots/`.
 
 mod browser;
 mod common;
@@ -98,6 +99,11 @@ async fn a_job_typed_into_the_form_is_solved_stored_reopened_and_shown_safely() 
     a_stored_session_reopens_after_a_reload(&stand).await;
     stand.renew().await;
     a_session_named_like_html_is_shown_as_text_and_runs_nothing(&stand).await;
+    stand.renew().await;
+    browser::noise::the_noise_pull_is_shown_beside_the_fitted_weight_only_when_the_noise_is_stated(
+        &stand,
+    )
+    .await;
     stand.stop().await;
 }
 

@@ -10,6 +10,7 @@ pub mod kit_fit;
 pub mod kit_support;
 pub mod machine;
 pub mod multispeed;
+pub mod noise;
 pub mod options;
 pub mod scenes;
 pub mod stand;

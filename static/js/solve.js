@@ -59,7 +59,7 @@ export function correctionsTable(solution) {
       h("th", { class: "corr-plane" }, c.plane),
       h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g, 1)} g`),
       h("td", { class: "corr-angle" }, nothing ? "–" : fmtAngle(c.angle_deg)),
-      h("td", { class: "corr-uncertainty" }, c.uncertainty ? [uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]), unbiasedLine(c)] : "–"),
+      h("td", { class: "corr-uncertainty" }, c.uncertainty ? [uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]), nothing ? null : unbiasedLine(c)] : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
       h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
       );

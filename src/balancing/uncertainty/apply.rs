@@ -165,7 +165,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         .enumerate()
     {
         // (8.4) and, for samples, Hotelling's widening (8.5).
-        let scale = (1.0 + k.unwrap_or(0.0)) * super::dof::widening(nu);
+        let scale = super::second_order(k) * super::dof::widening(nu);
         let mut widened = cc * scale;
         // Where the errors-in-variables estimate `C*` (8.3) is formed, the
         // correction `c` (the minimiser) errs by its bias as well as its

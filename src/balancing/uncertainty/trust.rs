@@ -26,8 +26,6 @@
 //! heavy the trial): there the warning says so and asks first for a sensor or
 //! speed that tells the planes apart.
 
-use nalgebra::Matrix2;
-
 use super::Propagation;
 use crate::balancing::solution::{Solution, Warning};
 use crate::balancing::solve::Fit;
@@ -36,8 +34,8 @@ use crate::balancing::solve::Fit;
 /// at which the first-order 95 % figures are still calibrated (module doc).
 pub const KAPPA_LIMIT: f64 = 0.15;
 
-/// The correction's covariance to second order in the coefficients' noise:
-/// `(1 + κ_j) Σ_j`. Expanding `Â⁺ = A⁺ − A⁺ E A⁺ + …` (`Â = A + E`), the
+/// The factor `1 + κ_j` that takes the correction's covariance to second
+/// order in the coefficients' noise, `(1 + κ_j) Σ_j` (method 8.4). Expanding `Â⁺ = A⁺ − A⁺ E A⁺ + …` (`Â = A + E`), the
 /// correction error gains the term `−A⁺ E (Ĉ − C)`, the noise of the
 /// coefficients acting on the error of the correction itself; for plane `j`
 /// its variance is `[(AᴴA)⁻¹]_jj M_jj Var(Ĉ_j) = κ_j Σ_j` (own plane; the
@@ -47,8 +45,8 @@ pub const KAPPA_LIMIT: f64 = 0.15;
 /// times the first-order one to the same order). It matters only where the
 /// first-order figures are about to fail (`κ` up to [`KAPPA_LIMIT`] adds up to
 /// 15 % to the variance).
-pub fn second_order(cov: &Matrix2<f64>, kappa: Option<f64>) -> Matrix2<f64> {
-    cov * (1.0 + kappa.unwrap_or(0.0))
+pub fn second_order(kappa: Option<f64>) -> f64 {
+    1.0 + kappa.unwrap_or(0.0)
 }
 
 /// `κ_j` of every plane of `fit.planes` (module doc); `None` where the plane

@@ -42,9 +42,7 @@ use num_complex::Complex64;
 mod apply;
 mod bias;
 mod dof;
-mod ellipse;
 mod propagate;
-mod quantile;
 mod region;
 mod remaining;
 mod trust;
@@ -201,5 +199,5 @@ mod tests {
 mod region_tests;
 
 #[cfg(test)]
-#[path = "uncertainty/quantile_tests.rs"]
+#[path = "uncertainty/region/quantile_tests.rs"]
 mod quantile_tests;

@@ -6,8 +6,8 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
 
-use super::quantile::polar::Polar;
 use super::region::amplitude_95_by_quadrature;
+use super::region::quantile::polar::Polar;
 use super::{amplitude_95, correction_uncertainty, normal_cdf, CHI2_2_95};
 use crate::balancing::model::{AngleDirection, Conventions, PhaseConvention};
 
@@ -217,7 +217,7 @@ fn the_polar_rule_agrees_with_the_quadrature_wherever_it_converges() {
             let Some([p, _]) = ring.inside(rho) else {
                 continue;
             };
-            let [r, _] = super::quantile::quadrature::inside(mu1, mu2, s1, s2, rho);
+            let [r, _] = super::region::quantile::quadrature::inside(mu1, mu2, s1, s2, rho);
             worst = worst.max((p - r).abs());
             used += 1;
         }
@@ -295,10 +295,10 @@ fn the_arc_rule_agrees_with_the_quadrature_for_means_far_from_the_origin() {
         let [mu1, mu2, s1, s2] = super::region::principal(&mean, &cov).expect("spread");
         let q = amplitude_95_by_quadrature(mean, &cov);
         // None: too thin across for the arc's finest level (the quadrature answers).
-        if let Some(mut arc) = super::quantile::arc::Arc::new(mu1, mu2, s1, s2) {
+        if let Some(mut arc) = super::region::quantile::arc::Arc::new(mu1, mu2, s1, s2) {
             for rho in [q - 2.0 * s1, q, q + s1] {
                 if let Some([p, _]) = arc.inside(rho) {
-                    let [r, _] = super::quantile::quadrature::inside(mu1, mu2, s1, s2, rho);
+                    let [r, _] = super::region::quantile::quadrature::inside(mu1, mu2, s1, s2, rho);
                     worst_p = worst_p.max((p - r).abs());
                     used += 1;
                 }

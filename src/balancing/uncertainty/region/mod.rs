@@ -5,13 +5,16 @@
 use nalgebra::{Matrix2, SymmetricEigen, Vector2};
 use num_complex::Complex64;
 
-use super::ellipse::Ellipse;
-use super::quantile::newton::newton;
-use super::quantile::polar::Polar;
-use super::quantile::quadrature;
 use crate::balancing::model::{AngleDirection, Conventions};
 use crate::balancing::phasor::{weight_out, wrap_deg};
 use crate::balancing::solution::Uncertainty;
+use ellipse::Ellipse;
+use quantile::newton::newton;
+use quantile::polar::Polar;
+use quantile::quadrature;
+
+mod ellipse;
+pub(super) mod quantile;
 
 /// 95 % quantile of χ² with 2 degrees of freedom, `−2 ln 0.05`.
 pub const CHI2_2_95: f64 = 5.991_464_547_107_979;

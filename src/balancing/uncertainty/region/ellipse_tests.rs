@@ -7,7 +7,7 @@ use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
-use super::super::region::{axes, CHI2_2_95};
+use super::super::{axes, CHI2_2_95};
 use super::Ellipse;
 
 /// Maximum of a periodic `f` over `[0, 2π)`: the best of 2048 samples refined

@@ -3,7 +3,7 @@
 //! trapezoidal rule (`polar`) does not converge at its finest level, and the
 //! reference the tests hold the fast path to.
 
-use super::super::region::normal_cdf;
+use super::super::normal_cdf;
 
 /// Beyond this many standard deviations a normal tail is below 1e-17: `normal_cdf`
 /// returns exactly 1 from 8.3 on.

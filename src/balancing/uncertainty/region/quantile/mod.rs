@@ -5,7 +5,7 @@
 //! covariance go in is `remaining`'s business.
 
 #[cfg(test)]
-pub(super) mod arc;
-pub(super) mod newton;
-pub(super) mod polar;
-pub(super) mod quadrature;
+pub(in crate::balancing::uncertainty) mod arc;
+pub(in crate::balancing::uncertainty) mod newton;
+pub(in crate::balancing::uncertainty) mod polar;
+pub(in crate::balancing::uncertainty) mod quadrature;

@@ -9,8 +9,8 @@ use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
 use super::amplitude_95;
-use super::quantile::quadrature;
 use super::region::principal;
+use super::region::quantile::quadrature;
 
 /// The 95 % quantile of `|R|` by bisection on the quadrature's `P` over the
 /// bracket `[|μ|, |μ| + 2.448σ₁]` (`region::quantile` says why it holds).

@@ -102,8 +102,9 @@ fn benches(c: &mut Criterion) {
     c.bench_function("solve two planes, 4 sensors, 1 speed", |b| {
         b.iter(|| solve(black_box(&small), &options).unwrap())
     });
-    // Stated noise: the errors-in-variables correction iterated to its
-    // fixed point runs too (issue 12, uncertainty::bias).
+    // Stated noise: the errors-in-variables estimate iterated to its fixed
+    // point, its bias map and a second propagation run too (issue 12,
+    // uncertainty::bias, method 8.11 and 8.12).
     let stated = SolveOptions {
         amplitude_noise_pct: Some(2.0),
         phase_noise_deg: Some(2.0),

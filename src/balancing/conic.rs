@@ -76,7 +76,7 @@ pub struct ConeSolution {
 
 /// Minimise the residual r = b + A x over complex x (rows of A and b already weighted
 /// by the caller): objective LeastSquares → ‖r‖₂, MinMax → max_a |r_a|;
-/// subject to |x_j| ≤ max_abs[j] where Some. A: rows × planes, internal frame.
+/// subject to |x_j| ≤ `max_abs[j]` where Some. A: rows × planes, internal frame.
 pub fn solve_cone(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,

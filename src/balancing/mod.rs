@@ -61,7 +61,7 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     job::solve(session, options)
 }
 
-/// [`solve`] of a session already validated (by [`check_file`] or `validate::check`).
+/// [`solve()`] of a session already validated (by [`check_file`] or `validate::check`).
 pub fn solve_checked(
     checked: validate::Checked<'_>,
     options: &SolveOptions,

@@ -49,7 +49,7 @@ const ROUND: f64 = 6_755_399_441_055_744.0;
 ///
 /// `t = min/max` of `|x|, |y|` in `[0, 1]`; with `c = k/8` nearest `t`,
 /// `atan t = atan c + atan((t − c)/(1 + t c))` (`t − c` exact by Sterbenz's
-/// lemma), the second by [`atan_small`] on `|u| ≤ 1/16`; then the octant.
+/// lemma), the second by `atan_small` on `|u| ≤ 1/16`; then the octant.
 /// One division for `t`, no branch on the octant before it; about 45
 /// instructions.
 #[inline]

@@ -3,7 +3,7 @@
 //! allow and which would make field order part of the format.
 //!
 //! A struct marked `#[serde(remote = "Self")]` gets its derived code as
-//! inherent functions; [`objects_only!`] then implements the traits, asking
+//! inherent functions; `objects_only!` then implements the traits, asking
 //! the deserializer for a map so that an array is refused (400, naming the
 //! field, see `error::classify`).
 

@@ -23,7 +23,7 @@ pub const TRIAL_EFFECT_THRESHOLD: f64 = 0.3;
 /// whose column is nearly a combination of more significant ones gets nearly 0.
 /// Returned in column order.
 ///
-/// Norms equal within [`PIVOT_TIE`] are a tie, won by the plane listed first.
+/// Norms equal within `PIVOT_TIE` are a tie, won by the plane listed first.
 /// The first step is always such a tie (every column has norm 1), and without
 /// the tolerance rounding in the scaling picked the winner: the same readings
 /// with `W` computed another way moved every factor by up to 5 % (issue 15).

@@ -132,7 +132,7 @@ pub async fn the_noise_pull_is_shown_beside_the_fitted_weight_only_when_the_nois
         assert!((mass - c["mass_g"].as_f64().unwrap()).abs() <= 0.051, "{c}");
     }
     super::job::scroll_to(b, "#step-solve table.corrections").await;
-    b.screenshot("solution-noise-pull").await;
+    super::job::shots(b, "solution-noise-pull").await;
 
     // The results CSV carries each estimate as a row of its own, in the same columns.
     let csv = b

@@ -187,7 +187,8 @@ impl Row {
     /// [`Self::amplitude_95`] with the distribution's centre moved by
     /// `shift`: a part of the remaining vibration that the prediction `R̂`
     /// does not hold, estimated beside it (the fitted correction's
-    /// errors-in-variables bias on this row, `Ŵ_a (Ĉ − C*)`, method 8.12).
+    /// errors-in-variables bias on this row, `Ŵ_a (Ĉ − C*)` scaled for its
+    /// noise, `fitted::bias_move`, method 8.12).
     pub fn amplitude_95_moved(&self, r_hat: Complex64, pooled: Pooled, shift: Complex64) -> f64 {
         match self {
             Row::Exact(su) => amplitude_95(r_hat + shift, su),

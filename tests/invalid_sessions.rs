@@ -214,6 +214,15 @@ const CASES: &[(&str, Mutation, Stage, ErrorKind, &str)] = &[
         "runs[2].weights[0].mass_g",
     ),
     (
+        "trial mass too small to be a weight (1e-320 g made every coefficient infinite)",
+        |s| {
+            s["runs"][1]["weights"][0]["mass_g"] = json!(1e-320);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[1].weights[0].mass_g",
+    ),
+    (
         "NaN as a string",
         |s| {
             s["runs"][1]["weights"][0]["mass_g"] = json!("NaN");

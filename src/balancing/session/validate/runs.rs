@@ -14,6 +14,10 @@ use crate::balancing::error::InputError;
 use crate::balancing::model::{Reading, Sensor, Session};
 
 const MAX_MASS_G: f64 = 1e7;
+/// A trial mass below a microgram is no balancing weight; below it the
+/// influence coefficients `ΔY / T` (method 2.1) could overflow (a trial mass
+/// of 1e-320 g made every coefficient infinite and the solver panic).
+const MIN_MASS_G: f64 = 1e-6;
 
 /// What the field checks of the runs found.
 pub(super) struct RunFields {
@@ -119,6 +123,13 @@ pub(super) fn check_runs(
                 false,
                 "the mass",
             )?;
+            if w.mass_g < MIN_MASS_G {
+                return Err(InputError::invalid(
+                    "invalid_value",
+                    format!("{}.mass_g", f()),
+                    format!("the trial mass {} g is below {MIN_MASS_G} g, lighter than any balancing weight: give the mass in grams", w.mass_g),
+                ));
+            }
             check_angle(|| format!("{}.angle_deg", f()), w.angle_deg)?;
         }
         start.push(sensor.len());

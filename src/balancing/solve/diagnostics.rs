@@ -45,12 +45,16 @@ pub fn significance_factors(a: &DMatrix<Complex64>) -> Vec<f64> {
     while !left.is_empty() {
         let norms: Vec<f64> = left.iter().map(|&k| cols[k].norm()).collect();
         let top = norms.iter().cloned().fold(0.0, f64::max);
-        let (pos, &j) = left
+        // The largest norm is among them unless the norms are not numbers
+        // (never from checked readings): those planes keep the factor 0.
+        let Some((pos, &j)) = left
             .iter()
             .enumerate()
             .filter(|&(i, _)| norms[i] >= top * (1.0 - PIVOT_TIE))
             .min_by_key(|&(_, &k)| k)
-            .expect("the largest norm is among them");
+        else {
+            break;
+        };
         left.swap_remove(pos);
         let norm = norms[pos];
         factor[j] = norm;
@@ -151,6 +155,18 @@ mod tests {
         let f = significance_factors(&a);
         assert!((f[0] - 1.0).abs() < 1e-12 && (f[1] - 1.0).abs() < 1e-12);
         assert!((condition_number(&a) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_column_that_is_not_a_number_ranks_nothing_and_does_not_panic() {
+        let a = DMatrix::from_row_slice(
+            2,
+            2,
+            &[c(f64::NAN, 0.0), c(1.0, 0.0), c(0.0, 0.0), c(0.0, 1.0)],
+        );
+        let f = significance_factors(&a);
+        // The finite column is ranked first; the other keeps 0.
+        assert!(f[0] == 0.0 && (f[1] - 1.0).abs() < 1e-12, "{f:?}");
     }
 
     #[test]

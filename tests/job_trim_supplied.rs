@@ -168,6 +168,12 @@ fn with_supplied_coefficients_an_unknown_from_run_or_a_missing_coefficient_names
     let exact = supplied(&rotor.w, conv, |_, _| None);
     let mut missing = exact.clone();
     missing.as_array_mut().unwrap().remove(5);
+    // Finite but past anything readings could give: 1e300 unit/g made the
+    // SVD's singular values NaN and the solver panic (a 500 before session 14).
+    let mut huge = exact.clone();
+    huge[3]["amplitude_per_g"] = json!(1e300);
+    let mut huge_cov = exact.clone();
+    huge_cov[2]["covariance"] = json!([[1e300, 0.0], [0.0, 1e300]]);
     let cases = [
         (
             json!({"from_run": "no such run", "influence_coefficients": exact}),
@@ -184,6 +190,16 @@ fn with_supplied_coefficients_an_unknown_from_run_or_a_missing_coefficient_names
             json!({"from_run": "check", "influence_coefficients": missing}),
             "missing_coefficient",
             "options.influence_coefficients",
+        ),
+        (
+            json!({"from_run": "check", "influence_coefficients": huge}),
+            "invalid_value",
+            "options.influence_coefficients[3].amplitude_per_g",
+        ),
+        (
+            json!({"from_run": "check", "influence_coefficients": huge_cov}),
+            "invalid_value",
+            "options.influence_coefficients[2].covariance",
         ),
     ];
     for (o, code, field) in cases {

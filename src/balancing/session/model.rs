@@ -143,6 +143,7 @@ pub struct Sensor {
 #[serde(deny_unknown_fields)]
 pub struct Weight {
     pub plane: String,
+    /// Grams, from 1e-6 (a microgram) to 1e7.
     pub mass_g: f64,
     /// In the session's `angle_direction`, degrees from the reference mark.
     pub angle_deg: f64,
@@ -222,7 +223,7 @@ pub struct SuppliedCoefficient {
     pub speed_rpm: f64,
     pub sensor: String,
     pub plane: String,
-    /// Sensor unit per gram.
+    /// Sensor unit per gram, 0 to 1e15.
     pub amplitude_per_g: f64,
     /// In the session's `phase` convention.
     pub phase_deg: f64,

@@ -11,6 +11,13 @@ use crate::balancing::phasor::reading_in;
 use crate::balancing::validate::Checked;
 
 const FIELD: &str = "options.influence_coefficients";
+/// The largest coefficient a session's readings could give: the largest
+/// amplitude (1e9) over the lightest trial mass (1e-6 g). Beyond it the
+/// fit's products overflow (1e300 unit/g made the SVD's singular values NaN
+/// and the solver panic).
+const MAX_AMPLITUDE_PER_G: f64 = 1e15;
+/// The square of [`MAX_AMPLITUDE_PER_G`], for the covariance's entries.
+const MAX_COVARIANCE: f64 = 1e30;
 
 /// Flip of the imaginary axis between the session's phase convention and the
 /// internal frame (lag counts phase the other way).
@@ -40,10 +47,13 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
             "a speed must be a finite number greater than 0",
         ));
     }
-    if !(c.amplitude_per_g.is_finite() && c.amplitude_per_g >= 0.0) {
+    if !(c.amplitude_per_g.is_finite() && (0.0..=MAX_AMPLITUDE_PER_G).contains(&c.amplitude_per_g))
+    {
         return Err(bad(
             f("amplitude_per_g"),
-            "must be a finite number, 0 or more",
+            format!(
+                "must be a finite number from 0 to {MAX_AMPLITUDE_PER_G} (sensor unit per gram)"
+            ),
         ));
     }
     if !(c.phase_deg.is_finite() && c.phase_deg.abs() <= 1e6) {
@@ -56,7 +66,7 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
         return Ok(None);
     };
     let m = Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
-    let finite = m.iter().all(|x| x.is_finite());
+    let finite = m.iter().all(|x| x.is_finite() && x.abs() <= MAX_COVARIANCE);
     let sym = (m[(0, 1)] - m[(1, 0)]).abs() <= 1e-9 * (m[(0, 0)].abs() + m[(1, 1)].abs());
     let psd = m[(0, 0)] >= 0.0
         && m[(1, 1)] >= 0.0
@@ -64,7 +74,7 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
     if !(finite && sym && psd) {
         return Err(bad(
             f("covariance"),
-            "a covariance is a symmetric positive semi-definite 2×2 matrix of finite numbers",
+            "a covariance is a symmetric positive semi-definite 2×2 matrix of finite numbers, each at most 1e30 (unit/g)²",
         ));
     }
     Ok(Some(m))

@@ -312,5 +312,11 @@ async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
             op.path
         );
     }
+    // The same server: every number of rich, valid bodies pushed to extremes
+    // (edge_support::numbers). Each body must also get through unharmed
+    // somewhere, or the mutations would only ever meet the first check.
+    let ok = edge_support::numbers::never_a_server_error(&server, &client, &mut rng, 1500).await;
+    eprintln!("2xx answers per rich body: {ok:?}");
+    assert!(ok.iter().all(|&n| n > 0), "{ok:?}");
     server.shutdown().await;
 }

@@ -110,4 +110,5 @@ pub fn start_binary(dir: &std::path::Path, args: &[&str]) -> (std::process::Chil
 pub fn terminate(child: std::process::Child) -> std::process::ExitStatus {
     crate::common::binary::terminate(child, 30)
 }
+pub mod numbers;
 pub mod schema;

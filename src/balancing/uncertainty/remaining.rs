@@ -252,7 +252,7 @@ impl Parts {
 }
 
 /// How much the weight moves a row's bound conditioned on its own
-/// prediction ([`Row::sensitivity`]).
+/// prediction (`Row::sensitivity`).
 pub fn weight_sensitivity(
     prediction: &Matrix2<f64>,
     through_c: &Matrix2<f64>,

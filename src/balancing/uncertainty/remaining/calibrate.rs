@@ -38,7 +38,7 @@ const MAX_HALF_STEP: f64 = 0.04;
 /// [`super::residual_shrinkage`], `shrink` its estimate `Ŝ`. With `Ŝ` taken
 /// as the truth, the statistic of [`super::residual_shrinkage`] is
 /// `x* = (1 + τ̂²)·dof·G`, `G ~ Γ(dof, 1)/dof` (Wilson–Hilferty at
-/// [`NODES`]), giving the weight `S*` a job like this one would estimate. A
+/// `NODES`), giving the weight `S*` a job like this one would estimate. A
 /// row's bound at `S*` then has variance `Σ_ε + S* K` against the true
 /// error's `Σ_ε + Ŝ K + (Ŝ − S*)² K / (1 − Ŝ)` (the centre's shift from
 /// `Ŝ − S*`, `R̂` having covariance `Σ_v / (1 − Ŝ)`); in the central isotropic

@@ -9,8 +9,10 @@ For each case it prints the share of ellipses (covariance_g2, chi-square 2 dof
 5.991) holding the exact least-squares correction, the share of
 amplitude_95 bounds holding the vibration that really remains, the mean error
 in sd per plane, and the share of planes flagged trial_effect_small. At one
-speed planes P0 and P2 are nearly dependent (condition number 30-50): the
-ellipses hold 99.3-99.8 % there (BENCHMARKS.md / the session's closing note).
+speed planes P0 and P2 are nearly dependent (condition number of W about 54): the
+ellipses hold 99.7-99.9 % there: the first order itself over-covers
+least squares on planes whose weak direction the noise outweighs (method 8,
+"Nearly dependent planes", session 14).
 
 Not run by CI (NumPy is not a dependency). Usage:
   python3 scripts/coverage_heldout.py target/release/fieldbal [realisations]

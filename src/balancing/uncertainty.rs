@@ -67,6 +67,15 @@ pub const MAX_PHASE_NOISE_DEG: f64 = 90.0;
 /// Pseudo-samples of the option model mixed into a sample covariance (see [`reading_noise`]).
 pub const PRIOR_SAMPLES: f64 = 2.0;
 
+/// Whether `rows` used rows leave two or more complex degrees of freedom over
+/// `planes` planes: where the many-row forms apply (the rows conditioned on
+/// all predictions, method 8.8–8.9; the bias map of 8.11; the move of
+/// 8.12). With one (one speed, four sensors, three planes) the simpler forms
+/// are used; this one test keeps the three choices the same.
+pub fn two_or_more_spare(rows: usize, planes: usize) -> bool {
+    rows >= planes + 2
+}
+
 /// Covariance of a reading from the option model: independent radial
 /// (amplitude) noise of sd `amplitude_noise_pct/100·|Y|` and tangential (phase)
 /// noise of sd `|Y|·phase_noise_deg` (in radians), rotated from the

@@ -145,7 +145,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     // The region of the fitted correction where `C*` is formed (8.11): the
     // map form with two or more complex degrees of freedom over the planes.
     let biased = fit.unbiased.as_ref().map(|u| {
-        let map_form = sel.rows.len() >= fit.planes.len() + 2;
+        let map_form = super::two_or_more_spare(sel.rows.len(), fit.planes.len());
         super::bias::Region::new(u, &fit.c, &prop.correction_full, map_form)
     });
     let undetermined = undetermined(&fit.factor);

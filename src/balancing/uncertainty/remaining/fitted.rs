@@ -117,7 +117,8 @@ const BIAS_NOISE_PER_KAPPA: f64 = 2.0;
 /// (undetermined) keeps its estimate whole.
 pub fn bias_move(fit: &Fit, prop: &Propagation) -> Option<DVector<Complex64>> {
     let u = fit.unbiased.as_ref()?;
-    if fit.selection.rows.len() < fit.planes.len() + 2 {
+    if !crate::balancing::uncertainty::two_or_more_spare(fit.selection.rows.len(), fit.planes.len())
+    {
         return None;
     }
     let kappa = crate::balancing::uncertainty::kappa(fit, prop);

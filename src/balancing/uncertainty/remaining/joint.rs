@@ -104,7 +104,11 @@ pub struct Inputs<'a> {
 pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
     let n = inp.w.nrows();
     let (q, m) = (inp.planes.len(), inp.used_rows.len());
-    if q == 0 || m < q + 2 || inp.r_hat.len() != n || inp.own.len() != n {
+    if q == 0
+        || !crate::balancing::uncertainty::two_or_more_spare(m, q)
+        || inp.r_hat.len() != n
+        || inp.own.len() != n
+    {
         return None;
     }
     let (nn, mm) = (2 * q, 2 * m);

@@ -374,6 +374,17 @@ const CASES: &[(&str, Mutation, Stage, ErrorKind, &str)] = &[
         "rotor.mass_kg",
     ),
     (
+        // 9549·G·m/n was infinite, answered as null (fuzzing, session 15).
+        "subnormal service speed",
+        |s| {
+            s["rotor"] =
+                json!({"mass_kg": 420, "service_speed_rpm": 1e-320, "balance_grade": "G6.3"});
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "rotor.service_speed_rpm",
+    ),
+    (
         "both trials in one plane",
         |s| {
             s["runs"][2]["weights"][0]["plane"] = json!("inboard");
@@ -445,6 +456,13 @@ const BAD_OPTIONS: &[(&str, &str, &str)] = &[
         "options.row_weights[0].weight",
     ),
     (
+        // Its square underflowed: an infinite covariance, answered as null
+        // (fuzzing, session 15).
+        "row weight too small to square",
+        r#"{"row_weights": [{"sensor": "DE-H", "weight": 1e-300}]}"#,
+        "options.row_weights[0].weight",
+    ),
+    (
         "row weight matching nothing",
         r#"{"row_weights": [{"weight": 2}]}"#,
         "options.row_weights[0]",
@@ -471,6 +489,23 @@ fn every_invalid_option_is_rejected_with_the_field_at_fault() {
             .expect_err(what);
         assert_eq!(err.field.as_deref(), Some(*field), "{what}: {err:?}");
     }
+}
+
+#[test]
+fn the_weights_on_one_row_multiply_to_at_most_1e12_and_at_least_1e_minus_12() {
+    // 26 weights of 1e6 on one sensor made the SVD panic (fuzzing, session 15).
+    let session = balancing::parse_session(&serde_json::to_vec(&base()).unwrap()).unwrap();
+    for (n, w) in [(26, 1e6), (3, 1e5), (3, 1e-6)] {
+        let text = json!({ "row_weights": vec![json!({"sensor": "DE-V", "weight": w}); n] });
+        let options: SolveOptions = serde_json::from_value(text).unwrap();
+        let err = balancing::solve(&session, &options).expect_err("refused");
+        assert_eq!(err.field.as_deref(), Some("options.row_weights"), "{err:?}");
+        assert!(err.message.contains("'DE-V'"), "{}", err.message);
+    }
+    // Two weights in range multiply to within the bounds.
+    let text = json!({ "row_weights": [{"sensor": "DE-V", "weight": 1e6}, {"speed_rpm": 2950, "weight": 1e6}] });
+    let options: SolveOptions = serde_json::from_value(text).unwrap();
+    assert!(balancing::solve(&session, &options).is_ok());
 }
 
 #[test]

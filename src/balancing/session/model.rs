@@ -68,7 +68,9 @@ impl Conventions {
 #[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Rotor {
+    /// Kilograms, greater than 0 and at most 1e7.
     pub mass_kg: f64,
+    /// From 1 to 1e6 rpm.
     pub service_speed_rpm: f64,
     /// One of G0.4, G1, G2.5, G6.3, G16, G40, G100, G250, G630, G1600, G4000.
     pub balance_grade: String,
@@ -262,6 +264,8 @@ pub struct RowWeight {
     pub sensor: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub speed_rpm: Option<f64>,
+    /// 0 (the rows it matches are left out), or from 1e-6 to 1e6; the
+    /// weights that match one row multiply to 1e-12 to 1e12.
     pub weight: f64,
 }
 

@@ -6,6 +6,14 @@ use crate::balancing::model::SolveOptions;
 use crate::balancing::validate::Checked;
 
 const MAX_ROW_WEIGHT: f64 = 1e6;
+/// Smallest non-zero row weight (0 leaves the rows out). Weights of 1e-300
+/// made the correction's covariance infinite (its squares underflow; found by
+/// fuzzing in session 15).
+const MIN_ROW_WEIGHT: f64 = 1e-6;
+/// Bound on the product of the weights that match one row, either way: two
+/// weights in range multiply to at most 1e12, while 26 weights of 1e6 on one
+/// sensor overflowed the SVD's squares and made it panic (session 15).
+const MAX_ROW_PRODUCT: f64 = 1e12;
 
 /// The rows and planes of one solve.
 #[derive(Debug, Clone, PartialEq)]
@@ -140,11 +148,12 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
     let mut matchers = Vec::new();
     for (i, rw) in options.row_weights.iter().flatten().enumerate() {
         let f = format!("options.row_weights[{i}]");
-        if !(rw.weight.is_finite() && (0.0..=MAX_ROW_WEIGHT).contains(&rw.weight)) {
+        let w = rw.weight;
+        if !(w == 0.0 || (w.is_finite() && (MIN_ROW_WEIGHT..=MAX_ROW_WEIGHT).contains(&w))) {
             return Err(InputError::invalid(
                 "invalid_value",
                 format!("{f}.weight"),
-                format!("a row weight is a finite number from 0 to {MAX_ROW_WEIGHT}"),
+                format!("a row weight is 0 (the rows are left out) or a finite number from {MIN_ROW_WEIGHT:e} to {MAX_ROW_WEIGHT:e}, got {w}"),
             ));
         }
         let sensor = match &rw.sensor {
@@ -190,6 +199,18 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
             })
             .map(|(_, _, w)| w)
             .product();
+        if g > 0.0 && !(1.0 / MAX_ROW_PRODUCT..=MAX_ROW_PRODUCT).contains(&g) {
+            let sensor = &session.sensors[row.sensor].id;
+            return Err(InputError::invalid(
+                "invalid_value",
+                "options.row_weights",
+                format!(
+                    "the row weights that match sensor '{sensor}' at {} rpm multiply to {g:e}: the product on one row must lie from {:e} to {MAX_ROW_PRODUCT:e} (or be 0)",
+                    row.speed_rpm,
+                    1.0 / MAX_ROW_PRODUCT
+                ),
+            ));
+        }
         if g > 0.0 {
             rows.push(a);
             weights.push(g);

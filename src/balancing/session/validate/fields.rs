@@ -11,6 +11,8 @@ use crate::balancing::error::InputError;
 use crate::balancing::model::{Rotor, Session};
 
 const MAX_RADIUS_MM: f64 = 1e5;
+/// Slowest service speed of a rotor, rpm.
+const MIN_SERVICE_SPEED_RPM: f64 = 1.0;
 const MAX_TEXT: usize = 200;
 
 pub(super) fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {
@@ -125,6 +127,17 @@ pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
         false,
         "the service speed",
     )?;
+    // The permissible unbalance 9549·G·m/n (method §5.2) was infinite for a
+    // subnormal speed (fuzzing, session 15); no balanced rotor turns slower.
+    if r.service_speed_rpm < MIN_SERVICE_SPEED_RPM {
+        return Err(invalid(
+            "rotor.service_speed_rpm",
+            format!(
+                "the service speed must be at least {MIN_SERVICE_SPEED_RPM} rpm, got {}",
+                r.service_speed_rpm
+            ),
+        ));
+    }
     if !GRADES.contains(&r.balance_grade.as_str()) {
         return Err(invalid(
             "rotor.balance_grade",

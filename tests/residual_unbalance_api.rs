@@ -63,6 +63,15 @@ async fn bad_checks_get_the_contracts_error_naming_the_field() {
         ("a string for a phase", with(&|b| b["readings"][1]["phase_deg"] = json!("NaN")), 422, "invalid_type", "readings[1].phase_deg"),
         ("unknown field", with(&|b| b["readings"][0]["phase_dg"] = json!(3)), 400, "unknown_field", "readings[0].phase_dg"),
         ("missing trial", with(&|b| { b.as_object_mut().unwrap().remove("trial"); }), 422, "missing_field", "trial"),
+        // Numbers past these ranges were answered 200 with `null` where the
+        // result overflowed (fuzzing, session 15).
+        ("huge amplitude", with(&|b| b["readings"][4]["amplitude"] = json!(1e300)), 422, "invalid_value", "readings[4].amplitude"),
+        ("subnormal speed", with(&|b| b["speed_rpm"] = json!(1e-320)), 422, "invalid_value", "speed_rpm"),
+        ("subnormal journal load", with(&|b| b["journal_load_kg"] = json!(1e-320)), 422, "invalid_value", "journal_load_kg"),
+        ("huge trial mass", with(&|b| b["trial"]["mass_g"] = json!(1e300)), 422, "invalid_value", "trial.mass_g"),
+        ("huge trial radius", with(&|b| b["trial"]["radius_mm"] = json!(1e300)), 422, "invalid_value", "trial.radius_mm"),
+        ("subnormal repeatability", with(&|b| b["phase_noise_deg"] = json!(1e-320)), 422, "invalid_value", "phase_noise_deg"),
+        ("huge first angle", with(&|b| b["readings"][0]["angle_deg"] = json!(1.7e308)), 422, "invalid_value", "readings[0].angle_deg"),
     ];
     for (name, b, status, code, field) in cases {
         let (got_status, _, got) =

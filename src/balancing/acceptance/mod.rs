@@ -24,7 +24,9 @@ pub const DEFAULT_PHASE_NOISE_DEG: f64 = 2.0;
 #[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct TrialWeight {
+    /// Grams, 1e-6 to 1e7.
     pub mass_g: f64,
+    /// Millimetres, 1e-3 to 1e5.
     pub radius_mm: f64,
 }
 
@@ -33,11 +35,13 @@ pub struct TrialWeight {
 #[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct PositionReading {
-    /// Where the trial weight sits, in the request's `angle_direction`.
+    /// Where the trial weight sits, in the request's `angle_direction`; within ±1e6.
     pub angle_deg: f64,
-    /// Amplitude in any one unit (balancing-machine units, µm, mm/s…): only ratios count.
+    /// Amplitude in any one unit (balancing-machine units, µm, mm/s…): only ratios
+    /// count. 0, or 1e-9 to 1e9.
     pub amplitude: f64,
     /// In the request's `phase` convention; give it for every reading or for none.
+    /// Within ±1e6.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub phase_deg: Option<f64>,
 }
@@ -50,17 +54,18 @@ pub struct PositionReading {
 pub struct ResidualRequest {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plane: Option<String>,
+    /// rpm, 1 to 1e6.
     pub speed_rpm: f64,
     pub trial: TrialWeight,
-    /// Static load on the journal nearest the plane, kg (API's W).
+    /// Static load on the journal nearest the plane, kg (API's W), 1e-3 to 1e7.
     pub journal_load_kg: f64,
     pub readings: Vec<PositionReading>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub conventions: Option<Conventions>,
-    /// Added: the machine's 1X amplitude repeatability, percent (default 2).
+    /// Added: the machine's 1X amplitude repeatability, percent (default 2; 1e-6 to 100).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub amplitude_noise_pct: Option<f64>,
-    /// Added: the machine's 1X phase repeatability, degrees (default 2).
+    /// Added: the machine's 1X phase repeatability, degrees (default 2; 1e-6 to 90).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub phase_noise_deg: Option<f64>,
 }

@@ -1,4 +1,5 @@
-//! Checks of a residual-unbalance request: every number finite and in range,
+//! Checks of a residual-unbalance request: every number finite and in its
+//! range (the ranges of a session's numbers, below),
 //! at least 4 equally spaced positions (the first may be repeated at the end),
 //! phases for every reading or for none. Each refusal names its field.
 
@@ -30,41 +31,55 @@ pub struct Input {
     pub phase_noise_deg: f64,
 }
 
-fn positive(field: &str, x: f64, what: &str) -> Result<f64, InputError> {
-    if x.is_finite() && x > 0.0 {
+// The ranges of the numbers, as in a session (`validate`): past them the
+// squares of the fit, the allowable 6350·W/N and the ratios over it became
+// infinite and were answered as `null` (fuzzing, session 15).
+/// Speed, rpm.
+const SPEED_RPM: (f64, f64) = (1.0, 1e6);
+/// Journal load, kg.
+const JOURNAL_LOAD_KG: (f64, f64) = (1e-3, 1e7);
+/// Trial mass, g (a session's weights).
+const TRIAL_MASS_G: (f64, f64) = (1e-6, 1e7);
+/// Trial radius, mm.
+const TRIAL_RADIUS_MM: (f64, f64) = (1e-3, 1e5);
+/// Amplitudes other than 0 (a session's readings).
+const AMPLITUDE: (f64, f64) = (1e-9, 1e9);
+/// Largest angle or phase, degrees.
+const MAX_ANGLE_DEG: f64 = 1e6;
+/// Smallest repeatability, percent or degrees: the misfits are divided by it.
+const MIN_NOISE: f64 = 1e-6;
+
+fn within(field: &str, x: f64, (lo, hi): (f64, f64), what: &str) -> Result<f64, InputError> {
+    if x.is_finite() && (lo..=hi).contains(&x) {
         Ok(x)
     } else {
         Err(InputError::invalid(
             "invalid_value",
             field,
-            format!("{what} must be a finite number greater than 0, got {x}"),
+            format!("{what} must be a finite number from {lo} to {hi}, got {x}"),
         ))
     }
 }
 
-fn finite(field: String, x: f64) -> Result<f64, InputError> {
-    if x.is_finite() {
+fn angle(field: String, x: f64) -> Result<f64, InputError> {
+    if x.is_finite() && x.abs() <= MAX_ANGLE_DEG {
         Ok(x)
     } else {
         Err(InputError::invalid(
             "invalid_value",
             field,
-            "must be a finite number",
+            format!("an angle in degrees must be finite and within ±{MAX_ANGLE_DEG}"),
         ))
     }
 }
 
 fn noise(field: &str, x: Option<f64>, default: f64, max: f64) -> Result<f64, InputError> {
-    let x = x.unwrap_or(default);
-    if x.is_finite() && x > 0.0 && x <= max {
-        Ok(x)
-    } else {
-        Err(InputError::invalid(
-            "invalid_value",
-            field,
-            format!("the repeatability must be a finite number above 0 and at most {max}, got {x}"),
-        ))
-    }
+    within(
+        field,
+        x.unwrap_or(default),
+        (MIN_NOISE, max),
+        "the repeatability",
+    )
 }
 
 /// Check `req`; the first fault found is named.
@@ -78,10 +93,25 @@ pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
             ));
         }
     }
-    positive("speed_rpm", req.speed_rpm, "the speed")?;
-    positive("journal_load_kg", req.journal_load_kg, "the journal load")?;
-    let mass = positive("trial.mass_g", req.trial.mass_g, "the trial mass")?;
-    let radius = positive("trial.radius_mm", req.trial.radius_mm, "the trial radius")?;
+    within("speed_rpm", req.speed_rpm, SPEED_RPM, "the speed")?;
+    within(
+        "journal_load_kg",
+        req.journal_load_kg,
+        JOURNAL_LOAD_KG,
+        "the journal load",
+    )?;
+    let mass = within(
+        "trial.mass_g",
+        req.trial.mass_g,
+        TRIAL_MASS_G,
+        "the trial mass",
+    )?;
+    let radius = within(
+        "trial.radius_mm",
+        req.trial.radius_mm,
+        TRIAL_RADIUS_MM,
+        "the trial radius",
+    )?;
     let amplitude_noise_pct = noise(
         "amplitude_noise_pct",
         req.amplitude_noise_pct,
@@ -98,18 +128,21 @@ pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
 
     let with_phase = req.readings.first().is_some_and(|r| r.phase_deg.is_some());
     for (k, r) in req.readings.iter().enumerate() {
-        finite(format!("readings[{k}].angle_deg"), r.angle_deg)?;
-        let a = finite(format!("readings[{k}].amplitude"), r.amplitude)?;
-        if a < 0.0 {
+        angle(format!("readings[{k}].angle_deg"), r.angle_deg)?;
+        let a = r.amplitude;
+        if !(a == 0.0 || (a.is_finite() && (AMPLITUDE.0..=AMPLITUDE.1).contains(&a))) {
             return Err(InputError::invalid(
                 "invalid_value",
                 format!("readings[{k}].amplitude"),
-                "an amplitude is 0 or more",
+                format!(
+                    "an amplitude is 0 or a finite number from {} to {}, got {a}",
+                    AMPLITUDE.0, AMPLITUDE.1
+                ),
             ));
         }
         match r.phase_deg {
             Some(p) => {
-                finite(format!("readings[{k}].phase_deg"), p)?;
+                angle(format!("readings[{k}].phase_deg"), p)?;
                 if !with_phase {
                     return Err(InputError::invalid(
                         "mixed_phases",

@@ -17,6 +17,7 @@ use super::model::Objective;
 
 mod active_set;
 mod kkt;
+mod loose;
 mod primal_dual;
 mod program;
 mod soc;
@@ -147,6 +148,8 @@ pub fn solve_cone_with(
         .enumerate()
         .filter_map(|(k, &j)| max_abs[j].map(|m| (k, m / (beta * d[k]))))
         .collect();
+    // Bounds that cannot bind are left out: a huge one stalled Clarabel (`loose`).
+    let bounds = loose::drop_loose(&a_s, &b_s, bounds);
     let (y, iterations, status) = match (objective, strategy) {
         (Objective::MinMax, Strategy::ActiveSet) => {
             active_set::min_max(&a_s, &b_s, &bounds, limits)?

@@ -220,3 +220,31 @@ fn from_run_naming_no_run_is_rejected_naming_the_option() {
     assert_eq!(err.code, "unknown_run");
     assert_eq!(err.field.as_deref(), Some("options.from_run"));
 }
+
+#[test]
+fn from_run_with_a_weight_at_the_largest_angle_gives_the_same_trim() {
+    // A kept weight at 1e6° (the largest angle a session allows) is the same
+    // weight as at 1e6 mod 360 = 280°; rebasing once turned it to 1e6 + 180°,
+    // which the check refused with an error that named no field (session 15).
+    let conv = Conventions::default();
+    let (s, _, _) = job(conv, &mut Noise::none(), 0.0);
+    let check = s["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .position(|r| r["id"] == "check")
+        .unwrap();
+    let at = |angle: f64| {
+        let mut s = s.clone();
+        // The same physical weight at both angles: the solutions must agree.
+        s["runs"][check]["weights"][0]["angle_deg"] = json!(angle);
+        s
+    };
+    let far = solve_json(&at(1e6), json!({"from_run": "check"}));
+    let near = solve_json(&at(280.0), json!({"from_run": "check"}));
+    for p in PLANES {
+        let c = correction(conv, &near, p);
+        assert!(close(correction(conv, &far, p), c, 1e-9), "{p}");
+        assert!(close(total(conv, &far, p), total(conv, &near, p), 1e-9));
+    }
+}

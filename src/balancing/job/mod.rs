@@ -22,7 +22,7 @@ use crate::balancing::select::select;
 use crate::balancing::solution::{Solution, TotalWeight};
 use crate::balancing::solve as one_shot;
 use crate::balancing::uncertainty::noise_options;
-use crate::balancing::validate::{check, Checked};
+use crate::balancing::validate::{check, Checked, MAX_ANGLE_DEG};
 
 /// Solve with the v2 options: `from_run`, `influence_coefficients`, and the
 /// run checks; without them, exactly the v1 solve plus `run_checks`.
@@ -123,7 +123,15 @@ pub fn rebase(session: &Session, r: usize) -> Session {
         .weights
         .iter()
         .map(|w| Weight {
-            angle_deg: w.angle_deg + 180.0,
+            // Turned the way that stays within the angles a session allows:
+            // a weight at 1e6° became 1e6 + 180°, which the rebased session's
+            // check refused with a 422 naming no field of the request
+            // (fuzzing, session 15).
+            angle_deg: if w.angle_deg + 180.0 > MAX_ANGLE_DEG {
+                w.angle_deg - 180.0
+            } else {
+                w.angle_deg + 180.0
+            },
             ..w.clone()
         })
         .collect();

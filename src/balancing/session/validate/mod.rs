@@ -31,7 +31,8 @@ const MAX_AMPLITUDE: f64 = 1e9;
 /// Smallest non-zero amplitude: no instrument resolves 1e-9 of its unit, and
 /// far smaller ones (1e-100) underflow when squared twice in the 95 % figures.
 const MIN_AMPLITUDE: f64 = 1e-9;
-const MAX_ANGLE_DEG: f64 = 1e6;
+/// Largest angle or phase a session may give, degrees (either sign).
+pub(crate) const MAX_ANGLE_DEG: f64 = 1e6;
 /// ISO 21940-11 balance grades G, mm/s (method 5.2).
 pub const GRADES: [&str; 11] = [
     "G0.4", "G1", "G2.5", "G6.3", "G16", "G40", "G100", "G250", "G630", "G1600", "G4000",

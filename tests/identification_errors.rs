@@ -242,3 +242,28 @@ async fn bad_input_is_refused_with_the_field_named() {
     }
     server.shutdown().await;
 }
+
+#[tokio::test]
+async fn results_that_overflow_are_refused_rather_than_answered_as_null() {
+    // Both were answered 200 with null (fuzzing, session 15).
+    let (_dir, server, client) = fresh_server().await;
+    let cases = [
+        (
+            "free-decay",
+            with(free_decay_request(), |v| v["samples"][1] = json!(1e150)),
+        ),
+        (
+            "model",
+            with(model_request(), |v| {
+                v["stiffness"]["fixed"][0][0] = json!(1e300)
+            }),
+        ),
+    ];
+    for (what, body) in cases {
+        let url = server.url(&format!("/api/v1/identify/{what}"));
+        let (status, _, answer) = post(&client, &url, &body).await;
+        assert_eq!(status, 422, "{what}: {answer}");
+        assert_eq!(answer["error"]["code"], "not_finite", "{what}: {answer}");
+    }
+    server.shutdown().await;
+}

@@ -177,6 +177,14 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
     }
     let (m, k) = assemble(&c, &p);
     let freqs = modes::solve(&m, &k)?.frequencies_hz();
+    // A matrix entry of 1e300 passed the solve and overflowed the parameters
+    // and the residual, answered as null (fuzzing, session 15).
+    if !(residual.is_finite() && p.iter().chain(&freqs).all(|x| x.is_finite())) {
+        return Err(InputError::unsolvable(
+            "not_finite",
+            "the model-correction equations: a result overflows (matrix entries of very different orders of magnitude?)",
+        ));
+    }
     let nm = c.mi.len();
     Ok(ModelCorrection {
         mass_parameters: p[..nm].to_vec(),

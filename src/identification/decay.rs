@@ -105,10 +105,28 @@ fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
 /// Identify the oscillator from its free decay.
 pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
     check(req)?;
-    match req.damping {
+    let got = match req.damping {
         DampingLaw::Viscous => viscous(&req.samples, req.dt_s),
         DampingLaw::Turbulent => turbulent(&req.samples, req.dt_s),
+    }?;
+    // A sample of 1e150 beside ones of order 1 passed the fit and overflowed
+    // the RMS misfit, answered as null (fuzzing, session 15).
+    let all = [
+        got.frequency_hz,
+        got.c_over_m,
+        got.b_over_m,
+        got.decrement,
+        got.amplitude,
+        got.phase_deg,
+        got.fit_rms,
+    ];
+    if !all.iter().all(|x| x.is_finite()) {
+        return Err(InputError::unsolvable(
+            "not_finite",
+            "the free decay: a result overflows (samples of very different orders of magnitude?)",
+        ));
     }
+    Ok(got)
 }
 
 /// `ωτ` from `cos(ωτ)`, or an error when the samples do not oscillate (or

@@ -41,7 +41,7 @@ impl Job<'_> {
             self.client.post(url)
         };
         let (status, _, answer) = send(req.json(body)).await;
-        (judge(path, status, &answer, body, false), answer)
+        (judge(path, status, &answer, body), answer)
     }
 }
 

@@ -100,7 +100,7 @@ struct Tally {
 }
 
 /// Coverage of per-realisation hit fractions, with its standard error (module doc).
-fn coverage(hits: &[f64], checks: usize) -> (f64, f64) {
+pub(super) fn coverage(hits: &[f64], checks: usize) -> (f64, f64) {
     let r = hits.len() as f64;
     let p = hits.iter().sum::<f64>() / r;
     let var = hits.iter().map(|h| (h - p).powi(2)).sum::<f64>() / (r - 1.0);

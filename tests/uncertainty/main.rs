@@ -7,6 +7,7 @@
 mod calibration;
 mod dependent_planes;
 mod eiv;
+mod few_speeds;
 mod linearisation;
 mod noise_options;
 mod rotor_model;

@@ -1,0 +1,170 @@
+//! `amplitude_95` at a few speeds, one of them far below the others (issue
+//! 12, session 15): the low speed's readings are small and, the noise being
+//! relative, precise, so the all-rows conditioning (method 8.8) recovers
+//! the correction's error, bias included, from the predictions, and the
+//! bias move (8.12) must not be added on top of it (remaining/fitted.rs).
+//! Before session 15 the bound held 88.2 % and 89.0 % here at 10 % and 30 %
+//! trials (96.2 % at 100 %), and 78–86 % on the held-out rotor of
+//! scripts/coverage_heldout.py at 1000/2750/4500 rpm. Now the bound is the
+//! larger of the moved and the unmoved one, and it errs the other way here:
+//! 97.9–98.4 %. The test holds the side that is false precision: never
+//! below the window (93 % less three cluster standard errors, as eiv.rs);
+//! the over-coverage is stated, not held (method §8, session 15).
+//!
+//! The rotor is a third one, modal like the held-out rotor but not it:
+//! three modes (1200, 3100, 6000, damping 4–7 %), sensors near each end in
+//! two directions of different stiffness, planes at 0.15, 0.5, 0.85 of the
+//! length, unbalance at the planes and between them. Three modes and three
+//! planes: the exact correction leaves no residual. Speeds 600, 2200 and
+//! 3800 (the vibration 7.7, 153 and 958 over the four sensors), trials of
+//! 10, 30 and 100 % of the vibration (masses at angle 0), 2 %/2° stated,
+//! 400 realisations. A correct bound (true coverage 93 % or more) fails
+//! with probability below 0.14 %; the old one (88–89 %, cluster sd 0.7–0.8
+//! %) fails with certainty. The ellipses are printed, not held: 91.1–99.3 %
+//! here (method §8, session 15, "few speeds").
+
+use fieldbal::balancing::model::SolveOptions;
+use fieldbal::balancing::phasor::weight_in;
+use fieldbal::balancing::uncertainty::CHI2_2_95;
+use nalgebra::{DMatrix, DVector, Vector2};
+use num_complex::Complex64;
+use rand::rngs::StdRng;
+use rand::SeedableRng;
+
+use super::eiv::coverage;
+use super::{estimate, noisy, session_of, solve, LEAD_WITH};
+
+const SPEEDS: [f64; 3] = [600.0, 2200.0, 3800.0];
+const REALISATIONS: usize = 400;
+/// Sensor stations (fraction of the length) and the stiffness factor of each direction.
+const SENSORS: [(f64, f64); 4] = [(0.1, 1.0), (0.1, 1.25), (0.9, 1.0), (0.9, 1.15)];
+/// Modes: natural frequency (in the speeds' unit) and damping ratio.
+const MODES: [(f64, f64); 3] = [(1200.0, 0.04), (3100.0, 0.06), (6000.0, 0.07)];
+const PLANES: [f64; 3] = [0.15, 0.5, 0.85];
+
+fn shape(k: usize, z: f64) -> f64 {
+    ((k + 1) as f64 * std::f64::consts::PI * (z + 0.15) / 1.3).sin()
+}
+
+/// Response at each sensor and speed (rows speed-major) to a unit unbalance at `z`.
+fn column(z: f64) -> Vec<Complex64> {
+    let mut out = Vec::new();
+    for &speed in &SPEEDS {
+        for &(zs, stiff) in &SENSORS {
+            out.push(
+                MODES
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &(f, damping))| {
+                        let w = f * stiff;
+                        let den = Complex64::new(w * w - speed * speed, 2.0 * damping * w * speed);
+                        shape(k, zs) * shape(k, z) * speed * speed / den
+                    })
+                    .sum(),
+            );
+        }
+    }
+    out
+}
+
+/// The exact coefficients, the reference vibration and the trial masses for `effect`.
+fn rotor(effect: f64) -> (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>) {
+    let cols: Vec<Vec<Complex64>> = PLANES.iter().map(|&z| column(z)).collect();
+    let rows = cols[0].len();
+    let w = DMatrix::from_fn(rows, PLANES.len(), |a, j| cols[j][a]);
+    let at =
+        |z: f64, m: f64, phase: f64| DVector::from_vec(column(z)) * Complex64::from_polar(m, phase);
+    let y0 = at(0.15, 40.0, 0.7)
+        + at(0.5, 40.0, 2.9)
+        + at(0.85, 40.0, 5.1)
+        + at(0.3, 20.0, 1.9)
+        + at(0.7, 20.0, 4.4);
+    let trial = (0..PLANES.len())
+        .map(|j| effect * y0.norm() / w.column(j).norm())
+        .collect();
+    (w, y0, trial)
+}
+
+/// Per realisation, the share of rows whose bound held and of planes whose ellipse did.
+fn run(effect: f64, seed: u64) -> (Vec<f64>, Vec<f64>) {
+    let (w, y0, trial) = rotor(effect);
+    let c = -(w.clone().svd(true, true).solve(&y0, 1e-14).unwrap());
+    let exact: Vec<Vec<Complex64>> = std::iter::once(y0.iter().copied().collect())
+        .chain((0..trial.len()).map(|j| {
+            (0..y0.len())
+                .map(|a| y0[a] + w[(a, j)] * trial[j])
+                .collect()
+        }))
+        .collect();
+    let options = SolveOptions {
+        amplitude_noise_pct: Some(2.0),
+        phase_noise_deg: Some(2.0),
+        ..SolveOptions::default()
+    };
+    let mut rng = StdRng::seed_from_u64(seed);
+    let (mut rows, mut planes) = (Vec::new(), Vec::new());
+    for _ in 0..REALISATIONS {
+        let y: Vec<Vec<Complex64>> = exact
+            .iter()
+            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
+            .collect();
+        let speed = |a: usize| SPEEDS[a / SENSORS.len()];
+        let session = session_of(
+            "few speeds",
+            SENSORS.len(),
+            speed,
+            LEAD_WITH,
+            &trial,
+            &y,
+            None,
+        );
+        let sol = solve(&session, &options);
+        let fitted = DVector::from_fn(trial.len(), |j, _| {
+            let k = &sol.corrections[j];
+            weight_in(LEAD_WITH, k.mass_g, k.angle_deg)
+        });
+        let actual = &y0 + &w * fitted;
+        let held = sol
+            .predicted_residual
+            .iter()
+            .enumerate()
+            .filter(|(a, r)| actual[*a].norm() <= r.amplitude_95.unwrap())
+            .count();
+        rows.push(held as f64 / y0.len() as f64);
+        let inside = (0..trial.len())
+            .filter(|&j| {
+                let (z, cov) = estimate(&sol, j);
+                let (m, deg) = fieldbal::balancing::phasor::weight_out(LEAD_WITH, c[j]);
+                let d = z - Complex64::from_polar(m, deg.to_radians());
+                let v = Vector2::new(d.re, d.im);
+                cov.try_inverse()
+                    .is_some_and(|inv| (v.transpose() * inv * v)[0] <= CHI2_2_95)
+            })
+            .count();
+        planes.push(inside as f64 / trial.len() as f64);
+    }
+    (rows, planes)
+}
+
+#[test]
+fn at_three_speeds_one_far_below_the_others_amplitude_95_holds_at_least_95_percent() {
+    let mut failures = Vec::new();
+    for (case, effect) in [0.1, 0.3, 1.0].into_iter().enumerate() {
+        let (rows, planes) = run(effect, 300 + case as u64);
+        let a = coverage(&rows, SENSORS.len() * SPEEDS.len());
+        let e = coverage(&planes, PLANES.len());
+        eprintln!(
+            "3 speeds, trial {:.0} %: amplitude_95 {:.3} ± {:.3}, ellipse {:.3} ± {:.3} (not held)",
+            effect * 100.0,
+            a.0,
+            a.1,
+            e.0,
+            e.1
+        );
+        // Not below the window: `in_window`'s lower edge, 93 % − 3 sd.
+        if a.0 < 0.93 - 3.0 * a.1 {
+            failures.push(format!("trial {effect}: amplitude_95 {a:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}

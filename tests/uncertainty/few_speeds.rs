@@ -85,9 +85,14 @@ fn rotor(effect: f64) -> (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>) {
     (w, y0, trial)
 }
 
-/// Per realisation, the share of rows whose bound held and of planes whose ellipse did.
-fn run(effect: f64, seed: u64) -> (Vec<f64>, Vec<f64>) {
-    let (w, y0, trial) = rotor(effect);
+/// Per realisation of the job (`w`, `y0`, `trial` at `speeds`, rows
+/// speed-major over [`SENSORS`]), the share of rows whose bound held and of
+/// planes whose ellipse did.
+fn run(
+    (w, y0, trial): (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>),
+    speeds: &[f64],
+    seed: u64,
+) -> (Vec<f64>, Vec<f64>) {
     let c = -(w.clone().svd(true, true).solve(&y0, 1e-14).unwrap());
     let exact: Vec<Vec<Complex64>> = std::iter::once(y0.iter().copied().collect())
         .chain((0..trial.len()).map(|j| {
@@ -108,7 +113,7 @@ fn run(effect: f64, seed: u64) -> (Vec<f64>, Vec<f64>) {
             .iter()
             .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
             .collect();
-        let speed = |a: usize| SPEEDS[a / SENSORS.len()];
+        let speed = |a: usize| speeds[a / SENSORS.len()];
         let session = session_of(
             "few speeds",
             SENSORS.len(),
@@ -150,7 +155,7 @@ fn run(effect: f64, seed: u64) -> (Vec<f64>, Vec<f64>) {
 fn at_three_speeds_one_far_below_the_others_amplitude_95_holds_at_least_95_percent() {
     let mut failures = Vec::new();
     for (case, effect) in [0.1, 0.3, 1.0].into_iter().enumerate() {
-        let (rows, planes) = run(effect, 300 + case as u64);
+        let (rows, planes) = run(rotor(effect), &SPEEDS, 300 + case as u64);
         let a = coverage(&rows, SENSORS.len() * SPEEDS.len());
         let e = coverage(&planes, PLANES.len());
         eprintln!(
@@ -164,6 +169,44 @@ fn at_three_speeds_one_far_below_the_others_amplitude_95_holds_at_least_95_perce
         // Not below the window: `in_window`'s lower edge, 93 % − 3 sd.
         if a.0 < 0.93 - 3.0 * a.1 {
             failures.push(format!("trial {effect}: amplitude_95 {a:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The ellipses at few speeds on the calibration rotor of eiv.rs
+/// (tests/uncertainty/rotor_model.rs, four sensors as here), trials of 10 %
+/// and 30 %, held in eiv.rs's window (93–97 % widened by three cluster
+/// standard errors). At four speeds 1500–4500 rpm with 10 % trials the
+/// errors-in-variables estimate `C*` is itself 0.75–0.89 sd short (the fixed
+/// point of 8.3 does not contract: `‖B‖₂` 0.5–2.2), and the map form of
+/// (8.11) understated the bias with it: 82.5 % before session 15, 93.0 % with
+/// the simpler form wherever `‖B‖₂` reaches the contraction limit
+/// (bias/region.rs). Three speeds 91.5 % and 94.5 %, four at 30 % 91.7 %:
+/// inside the widened window, under 93 %.
+#[test]
+fn at_three_and_four_speeds_the_ellipses_hold_95_percent() {
+    let mut failures = Vec::new();
+    let sets: [&[f64]; 2] = [&[1500.0, 3000.0, 4500.0], &[1500.0, 2500.0, 3500.0, 4500.0]];
+    for (k, speeds) in sets.into_iter().enumerate() {
+        for (case, effect) in [0.1, 0.3].into_iter().enumerate() {
+            let r = super::rotor_model::rotor(speeds, effect);
+            let seed = 400 + 10 * k as u64 + case as u64;
+            let (_, planes) = run((r.w, r.y0, r.trial), speeds, seed);
+            let e = coverage(&planes, 3);
+            eprintln!(
+                "{} speeds, trial {:.0} %: ellipse {:.3} ± {:.3}",
+                speeds.len(),
+                effect * 100.0,
+                e.0,
+                e.1
+            );
+            if e.0 < 0.93 - 3.0 * e.1 {
+                failures.push(format!(
+                    "{} speeds, trial {effect}: ellipse {e:?}",
+                    speeds.len()
+                ));
+            }
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");

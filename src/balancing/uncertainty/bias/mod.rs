@@ -65,7 +65,7 @@ const RANK_TOLERANCE: f64 = 1e-10;
 const FIXED_POINT_STEPS: usize = 4;
 /// A step must shrink by this factor for the iteration to go on: beyond it the
 /// noise is too large beside the signal for the fixed point to exist (`κ ≳ 1`).
-const CONTRACTION: f64 = 0.7;
+pub(super) const CONTRACTION: f64 = 0.7;
 
 /// The pieces of the second-order bias that do not depend on the correction
 /// it is evaluated at: built once, evaluated at several corrections

@@ -10,6 +10,15 @@
 //! over the planes `I + B ≈ (ÂᴴÂ)⁻¹(ÂᴴÂ − M̂)` is near singular (method 8.3,
 //! "one speed"), and the region is `Σ + b̂ b̂ᵀ` instead. Measured in method
 //! §8, session 13.
+//!
+//! The same simpler form where `‖B‖₂` reaches [`super::CONTRACTION`]
+//! (session 15): there the fixed point of (8.3) does not contract, `C*` is
+//! the partial correction and short of the exact one (0.75–0.89 sd on the
+//! calibration rotor at four speeds 1500–4500 rpm with 10 % trials, `‖B‖₂`
+//! 0.5–2.2), so the map form's `b̂ b̂ᴴ − B Σ Bᴴ` understates the bias and its
+//! `(I + B)` is an expansion that does not converge: that case's ellipses
+//! held 82.5 %, now 93.0 % (tests/uncertainty/few_speeds.rs, ignored test).
+//! eiv.rs's ten speeds never reach it (identical figures).
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 use num_complex::Complex64;
@@ -35,7 +44,12 @@ impl Region {
         sigma: &DMatrix<f64>,
         map_form: bool,
     ) -> Region {
-        let spread_leak = map_form.then(|| {
+        // The map form only where the expansion behind it contracts (module doc).
+        let contracts = || {
+            let norm = u.map.clone().svd(false, false).singular_values.max();
+            norm < super::CONTRACTION
+        };
+        let spread_leak = (map_form && contracts()).then(|| {
             let rb = real_form(&u.map);
             let i_rb = DMatrix::<f64>::identity(rb.nrows(), rb.ncols()) + &rb;
             (

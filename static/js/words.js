@@ -14,6 +14,7 @@ const quoted = (message, fallback) => {
 const PLAIN = {
   trial_effect_small: (w) => [`The trial weight${w.plane ? ` in plane ${w.plane}` : ""} moved the vibration too little to measure its effect.`, "Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase)."],
   ill_conditioned: () => ["Two planes look almost the same to the sensors, so the corrections may be large and cancel each other.", "Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out planes the sensors cannot tell apart” in the options)."],
+  regions_unreliable: () => ["Some planes look almost the same to the sensors, so vibration that no plane can correct can hide in the answer: the 95 % figures of every plane may be far off.", "Fit the weights, then do a check run and trim; better, add a sensor or speed that tells the planes apart, or solve with fewer planes."],
   mass_limit_active: (w) => [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set.`, "The vibration left will be larger than without the limit; raise the limit if the plane can take more."],
   mixed_units: () => ["The sensors use different units, so the sum over them mixes units.", "Leave out the sensors of one unit, or accept that the larger numbers count more."],
   plane_undetermined: (w) => [`The readings cannot tell what plane ${w.plane || ""} needs: its trial weight changed nothing that the sensors see on their own.`, `Repeat the trial in plane ${w.plane || "that plane"} with a heavier weight or at a larger radius, add a sensor that sees it, or leave the plane out.`],
@@ -53,6 +54,9 @@ export function doubt(solution, c) {
   if (solution.from_run && c.mass_g < 0.05) return null;
   const small = solution.warnings.some((w) => (w.code === "trial_effect_small" || w.code === "plane_undetermined") && (!w.plane || w.plane === c.plane));
   if (small) return `The trial weight in plane ${c.plane} was too small to measure its effect, so this correction may be far off. Repeat the trial run in plane ${c.plane} with a bigger weight before fitting it.`;
+  if (solution.warnings.some((w) => w.code === "regions_unreliable")) {
+    return `The 95 % figures for plane ${c.plane} may be far off: planes that look almost the same to the sensors can hide vibration that no plane corrects. Fit the weight, then do a check run and trim.`;
+  }
   const u = c.uncertainty;
   if (!u) return null;
   if (!u.mass_g || u.angle_deg[1] - u.angle_deg[0] >= 359.999) {

@@ -232,6 +232,8 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
 
     // Coefficients' noise beside their signal: the trial too small to trust (issue 12).
     super::warn_untrusted(fit, &prop, &kappas, solution);
+    // Nearly alike planes: every plane's region may be off (issue 12).
+    super::trust::warn_hidden_residual(solution);
 
     let min_max = options.objective == Some(Objective::MinMax);
     let bound = solution

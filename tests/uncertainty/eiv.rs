@@ -58,16 +58,15 @@
 //! 34) fails it with probability about 99 %.
 
 use fieldbal::balancing::model::{AngleDirection, Conventions, PhaseConvention, SolveOptions};
-use fieldbal::balancing::phasor::weight_in;
 use fieldbal::balancing::uncertainty::CHI2_2_95;
 use fieldbal::balancing::Solution;
-use nalgebra::{DVector, Matrix2, Vector2};
+use nalgebra::{Matrix2, Vector2};
 use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::rotor_model::{rotor, session};
-use super::{estimate, noisy, solve, LAG_AGAINST, LEAD_WITH};
+use super::{estimate, noisy, remaining_held, solve, LAG_AGAINST, LEAD_WITH};
 
 const LAG_WITH: Conventions = Conventions {
     phase: PhaseConvention::Lag,
@@ -189,19 +188,8 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
             );
         }
         t.ellipse.push(held as f64 / planes as f64);
-        let fitted = DVector::from_fn(planes, |j, _| {
-            let c = &sol.corrections[j];
-            weight_in(conv, c.mass_g, c.angle_deg)
-        });
-        let actual = &rotor.y0 + &rotor.w * fitted;
-        let rows = sol.predicted_residual.len();
-        let below = sol
-            .predicted_residual
-            .iter()
-            .enumerate()
-            .filter(|(a, r)| actual[*a].norm() <= r.amplitude_95.unwrap())
-            .count();
-        t.amplitude.push(below as f64 / rows as f64);
+        t.amplitude
+            .push(remaining_held(&sol, conv, &rotor.w, &rotor.y0));
     }
     t
 }

@@ -24,7 +24,6 @@
 //! here (method §8, session 15, "few speeds").
 
 use fieldbal::balancing::model::SolveOptions;
-use fieldbal::balancing::phasor::weight_in;
 use fieldbal::balancing::uncertainty::CHI2_2_95;
 use nalgebra::{DMatrix, DVector, Vector2};
 use num_complex::Complex64;
@@ -32,7 +31,7 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::eiv::coverage;
-use super::{estimate, noisy, session_of, solve, LEAD_WITH};
+use super::{estimate, noisy, remaining_held, session_of, solve, LEAD_WITH};
 
 const SPEEDS: [f64; 3] = [600.0, 2200.0, 3800.0];
 const REALISATIONS: usize = 400;
@@ -124,18 +123,7 @@ fn run(
             None,
         );
         let sol = solve(&session, &options);
-        let fitted = DVector::from_fn(trial.len(), |j, _| {
-            let k = &sol.corrections[j];
-            weight_in(LEAD_WITH, k.mass_g, k.angle_deg)
-        });
-        let actual = &y0 + &w * fitted;
-        let held = sol
-            .predicted_residual
-            .iter()
-            .enumerate()
-            .filter(|(a, r)| actual[*a].norm() <= r.amplitude_95.unwrap())
-            .count();
-        rows.push(held as f64 / y0.len() as f64);
+        rows.push(remaining_held(&sol, LEAD_WITH, &w, &y0));
         let inside = (0..trial.len())
             .filter(|&j| {
                 let (z, cov) = estimate(&sol, j);

@@ -17,7 +17,7 @@ use fieldbal::balancing::model::{
     AngleDirection, Conventions, PhaseConvention, Plane, Reading, Run, Sample, Sensor, Session,
     SolveOptions, Unit, Weight,
 };
-use fieldbal::balancing::phasor::{reading_out, weight_out};
+use fieldbal::balancing::phasor::{reading_out, weight_in, weight_out};
 use fieldbal::balancing::uncertainty::CHI2_2_95;
 use fieldbal::balancing::{self, Solution};
 use nalgebra::{DMatrix, DVector, Matrix2};
@@ -255,6 +255,29 @@ pub fn noisy(y: Complex64, pct: f64, deg: f64, rng: &mut StdRng) -> Complex64 {
 
 pub fn solve(s: &Session, options: &SolveOptions) -> Solution {
     balancing::solve(s, options).expect("generated sessions solve")
+}
+
+/// The share of `sol`'s rows whose `amplitude_95` holds the vibration that
+/// really remains on the rotor (`w`, `y0`, internal frame) once its
+/// corrections are fitted.
+pub fn remaining_held(
+    sol: &Solution,
+    conv: Conventions,
+    w: &DMatrix<Complex64>,
+    y0: &DVector<Complex64>,
+) -> f64 {
+    let fitted = DVector::from_fn(sol.corrections.len(), |j, _| {
+        let c = &sol.corrections[j];
+        weight_in(conv, c.mass_g, c.angle_deg)
+    });
+    let actual = y0 + w * fitted;
+    let held = sol
+        .predicted_residual
+        .iter()
+        .enumerate()
+        .filter(|(a, r)| actual[*a].norm() <= r.amplitude_95.unwrap())
+        .count();
+    held as f64 / sol.predicted_residual.len() as f64
 }
 
 /// Correction of plane `j` as `m e^{iθ}` and its covariance, session frame.

@@ -44,7 +44,8 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::rotor_model::{rotor_with_planes, session};
-use super::{estimate, noisy, solve, LEAD_WITH};
+use super::{estimate, noisy, solve, Rotor, LEAD_WITH};
+use fieldbal::balancing::Solution;
 
 const SPEED: [f64; 1] = [3000.0];
 /// Correction planes at nodes 0, 1, 6: small residual (module doc).
@@ -53,8 +54,9 @@ const SMALL_RESIDUAL: [usize; 3] = [0, 1, 6];
 const LARGE_RESIDUAL: [usize; 3] = [1, 2, 4];
 const REALISATIONS: usize = 400;
 
-/// Per plane: (coverage of the ellipse, mean Mahalanobis² of the error).
-fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
+/// Solve `REALISATIONS` noisy jobs of the planes at `nodes` with trials of
+/// `effect` (2 %/2° stated), handing each answer to `f` with the rotor.
+fn each_job(nodes: &[usize], effect: f64, seed: u64, mut f: impl FnMut(&Rotor, &Solution)) {
     let rotor = rotor_with_planes(&SPEED, nodes, effect);
     let exact = rotor.readings();
     let mut rng = StdRng::seed_from_u64(seed);
@@ -63,8 +65,6 @@ fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
         phase_noise_deg: Some(2.0),
         ..SolveOptions::default()
     };
-    let planes = rotor.trial.len();
-    let mut sums = vec![(0.0, 0.0); planes];
     for _ in 0..REALISATIONS {
         let y: Vec<Vec<Complex64>> = exact
             .iter()
@@ -74,8 +74,16 @@ fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
             &session(LEAD_WITH, &SPEED, &rotor.trial, &y, None),
             &options,
         );
+        f(&rotor, &sol);
+    }
+}
+
+/// Per plane: (coverage of the ellipse, mean Mahalanobis² of the error).
+fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
+    let mut sums = vec![(0.0, 0.0); nodes.len()];
+    each_job(nodes, effect, seed, |rotor, sol| {
         for (j, sum) in sums.iter_mut().enumerate() {
-            let (z, cov) = estimate(&sol, j);
+            let (z, cov) = estimate(sol, j);
             let d = z - rotor.correction(LEAD_WITH, j);
             let v = Vector2::new(d.re, d.im);
             let inv = cov
@@ -85,7 +93,7 @@ fn measure(nodes: &[usize], effect: f64, seed: u64) -> Vec<(f64, f64)> {
             sum.0 += f64::from(u8::from(m2 <= CHI2_2_95));
             sum.1 += m2;
         }
-    }
+    });
     let r = REALISATIONS as f64;
     sums.iter().map(|&(h, m)| (h / r, m / r)).collect()
 }
@@ -167,27 +175,11 @@ fn with_two_nearly_dependent_planes_at_one_speed_the_ellipses_hold_93_to_97_perc
 /// their own `trial_effect_small` or `ill_conditioned` nor the job's):
 /// (held, checked).
 fn unwarned(nodes: &[usize], effect: f64, seed: u64) -> (f64, (usize, usize)) {
-    let rotor = rotor_with_planes(&SPEED, nodes, effect);
-    let exact = rotor.readings();
-    let mut rng = StdRng::seed_from_u64(seed);
-    let options = SolveOptions {
-        amplitude_noise_pct: Some(2.0),
-        phase_noise_deg: Some(2.0),
-        ..SolveOptions::default()
-    };
     let (mut flagged_jobs, mut held, mut checked) = (0, 0, 0);
-    for _ in 0..REALISATIONS {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
-        let sol = solve(
-            &session(LEAD_WITH, &SPEED, &rotor.trial, &y, None),
-            &options,
-        );
+    each_job(nodes, effect, seed, |rotor, sol| {
         if sol.warnings.iter().any(|w| w.code == "regions_unreliable") {
             flagged_jobs += 1;
-            continue;
+            return;
         }
         for (j, corr) in sol.corrections.iter().enumerate() {
             let own = sol.warnings.iter().any(|w| {
@@ -197,7 +189,7 @@ fn unwarned(nodes: &[usize], effect: f64, seed: u64) -> (f64, (usize, usize)) {
             if own {
                 continue;
             }
-            let (z, cov) = estimate(&sol, j);
+            let (z, cov) = estimate(sol, j);
             let d = z - rotor.correction(LEAD_WITH, j);
             let v = Vector2::new(d.re, d.im);
             let inside = cov
@@ -206,7 +198,7 @@ fn unwarned(nodes: &[usize], effect: f64, seed: u64) -> (f64, (usize, usize)) {
             held += usize::from(inside);
             checked += 1;
         }
-    }
+    });
     (flagged_jobs as f64 / REALISATIONS as f64, (held, checked))
 }
 

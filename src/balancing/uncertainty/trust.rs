@@ -132,10 +132,9 @@ pub fn warn_untrusted(
 /// held 19 % at 30 % trials and 71 % at 100 %, and 0–39 % at two close
 /// speeds (tests/uncertainty/dependent_planes.rs: 205 of 287 at 100 %,
 /// none left unwarned now); where nothing is left uncorrected the same
-/// ellipses hold 96–100 %
-/// (planes at nodes 0, 1, 6, the held-out rotor). The readings cannot tell
-/// the two apart (method §8, sessions 9–10), so the answer says so for the
-/// whole job. It fires exactly with `ill_conditioned` and adds no alarm to a
+/// ellipses hold 96–100 % (planes at nodes 0, 1, 6, the held-out rotor).
+/// The readings cannot tell the two apart (method §8, sessions 9–10), so the
+/// answer says so for the whole job. It fires exactly with `ill_conditioned` and adds no alarm to a
 /// job without one.
 pub fn warn_hidden_residual(solution: &mut Solution) {
     let planes: Vec<&str> = solution

@@ -17,7 +17,7 @@
 //! calibration rotor at four speeds 1500–4500 rpm with 10 % trials, `‖B‖₂`
 //! 0.5–2.2), so the map form's `b̂ b̂ᴴ − B Σ Bᴴ` understates the bias and its
 //! `(I + B)` is an expansion that does not converge: that case's ellipses
-//! held 82.5 %, now 93.0 % (tests/uncertainty/few_speeds.rs, ignored test).
+//! held 82.5 %, now 93.0 % (tests/uncertainty/few_speeds.rs holds it).
 //! eiv.rs's ten speeds never reach it (identical figures).
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};

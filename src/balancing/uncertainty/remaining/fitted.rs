@@ -37,9 +37,9 @@ use crate::balancing::uncertainty::Propagation;
 /// either: held-out rotor 94.2–97.8 % at three and four speeds, 95.3–97.6 %
 /// at ten (scripts/coverage_heldout.py, 400 realisations; before: 78–94 %,
 /// 95.0–96.7 %); eiv.rs's ten speeds 95.1–96.9 % (before 93.9–95.6 %); one
-/// speed makes no move and is unchanged. The price is
-/// over-coverage where the two differ and the move was right, or the
-/// conditioning more than right: tests/uncertainty/few_speeds.rs's rotor
+/// speed makes no move and is unchanged. The price is over-coverage where
+/// the two differ and the move was right, or the conditioning more than
+/// right: tests/uncertainty/few_speeds.rs's rotor
 /// 97.9–98.4 % (before 88.2–96.2 %), the held-out rotor at two speeds
 /// 97.0–98.6 % (before 95.2–97.4 %).
 pub fn fill(fit: &Fit, cov: &[Vec<Matrix2<f64>>], prop: &Propagation, solution: &mut Solution) {

@@ -7,6 +7,10 @@ use super::{ResidualRequest, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DE
 use crate::balancing::error::InputError;
 use crate::balancing::model::Conventions;
 use crate::balancing::phasor::{angle_diff_deg, weight_angle_in, wrap_deg};
+use crate::balancing::validate::{
+    MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_MASS_G, MAX_RADIUS_MM, MAX_SPEED_RPM, MIN_AMPLITUDE,
+    MIN_MASS_G, MIN_SERVICE_SPEED_RPM,
+};
 
 /// Fewest distinct positions: the amplitude fit has 3 unknowns and needs one
 /// more reading to test the fit at all.
@@ -31,21 +35,19 @@ pub struct Input {
     pub phase_noise_deg: f64,
 }
 
-// The ranges of the numbers, as in a session (`validate`): past them the
+// The ranges of the numbers, a session's own (`validate`): past them the
 // squares of the fit, the allowable 6350·W/N and the ratios over it became
 // infinite and were answered as `null` (fuzzing, session 15).
-/// Speed, rpm.
-const SPEED_RPM: (f64, f64) = (1.0, 1e6);
+/// Speed, rpm: a rotor's service speed.
+const SPEED_RPM: (f64, f64) = (MIN_SERVICE_SPEED_RPM, MAX_SPEED_RPM);
 /// Journal load, kg.
 const JOURNAL_LOAD_KG: (f64, f64) = (1e-3, 1e7);
 /// Trial mass, g (a session's weights).
-const TRIAL_MASS_G: (f64, f64) = (1e-6, 1e7);
+const TRIAL_MASS_G: (f64, f64) = (MIN_MASS_G, MAX_MASS_G);
 /// Trial radius, mm.
-const TRIAL_RADIUS_MM: (f64, f64) = (1e-3, 1e5);
+const TRIAL_RADIUS_MM: (f64, f64) = (1e-3, MAX_RADIUS_MM);
 /// Amplitudes other than 0 (a session's readings).
-const AMPLITUDE: (f64, f64) = (1e-9, 1e9);
-/// Largest angle or phase, degrees.
-const MAX_ANGLE_DEG: f64 = 1e6;
+const AMPLITUDE: (f64, f64) = (MIN_AMPLITUDE, MAX_AMPLITUDE);
 /// Smallest repeatability, percent or degrees: the misfits are divided by it.
 const MIN_NOISE: f64 = 1e-6;
 

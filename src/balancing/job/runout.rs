@@ -12,9 +12,7 @@ use num_complex::Complex64;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session};
 use crate::balancing::phasor::reading_in;
-
-const MAX_AMPLITUDE: f64 = 1e9;
-const MAX_ANGLE_DEG: f64 = 1e6;
+use crate::balancing::validate::{MAX_AMPLITUDE, MAX_ANGLE_DEG};
 
 /// The runout phasor of each sensor (internal frame), by sensor index; `None`
 /// for a sensor without one. Errors name `runout[i].…`.

@@ -10,9 +10,9 @@ use super::{IdIndex, GRADES, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AM
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Rotor, Session};
 
-const MAX_RADIUS_MM: f64 = 1e5;
+pub(crate) const MAX_RADIUS_MM: f64 = 1e5;
 /// Slowest service speed of a rotor, rpm.
-const MIN_SERVICE_SPEED_RPM: f64 = 1.0;
+pub(crate) const MIN_SERVICE_SPEED_RPM: f64 = 1.0;
 const MAX_TEXT: usize = 200;
 
 pub(super) fn invalid(field: impl Into<String>, message: impl Into<String>) -> InputError {

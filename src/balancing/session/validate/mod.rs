@@ -18,6 +18,8 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 
 pub use fields::check_rotor;
+pub(crate) use fields::{MAX_RADIUS_MM, MIN_SERVICE_SPEED_RPM};
+pub(crate) use runs::{MAX_MASS_G, MIN_MASS_G};
 
 use crate::balancing::error::InputError;
 use crate::balancing::limits::{check_session, too_large, Limits};
@@ -26,11 +28,13 @@ use crate::balancing::phasor::weight_in;
 
 /// Speeds closer than this (relative) are the same speed point (contract).
 pub const SPEED_TOLERANCE: f64 = 0.01;
-const MAX_SPEED_RPM: f64 = 1e6;
-const MAX_AMPLITUDE: f64 = 1e9;
+/// The ranges of a session's numbers, shared with the requests that take
+/// the same quantities (the residual-unbalance check, runout).
+pub(crate) const MAX_SPEED_RPM: f64 = 1e6;
+pub(crate) const MAX_AMPLITUDE: f64 = 1e9;
 /// Smallest non-zero amplitude: no instrument resolves 1e-9 of its unit, and
 /// far smaller ones (1e-100) underflow when squared twice in the 95 % figures.
-const MIN_AMPLITUDE: f64 = 1e-9;
+pub(crate) const MIN_AMPLITUDE: f64 = 1e-9;
 /// Largest angle or phase a session may give, degrees (either sign).
 pub(crate) const MAX_ANGLE_DEG: f64 = 1e6;
 /// ISO 21940-11 balance grades G, mm/s (method 5.2).

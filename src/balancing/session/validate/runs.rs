@@ -13,11 +13,11 @@ use super::{IdIndex, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE}
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Reading, Sensor, Session};
 
-const MAX_MASS_G: f64 = 1e7;
+pub(crate) const MAX_MASS_G: f64 = 1e7;
 /// A trial mass below a microgram is no balancing weight; below it the
 /// influence coefficients `ΔY / T` (method 2.1) could overflow (a trial mass
 /// of 1e-320 g made every coefficient infinite and the solver panic).
-const MIN_MASS_G: f64 = 1e-6;
+pub(crate) const MIN_MASS_G: f64 = 1e-6;
 
 /// What the field checks of the runs found.
 pub(super) struct RunFields {

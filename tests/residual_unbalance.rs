@@ -207,6 +207,9 @@ fn bad_requests_are_refused_naming_the_field() {
         ("three positions and a repeat", Box::new(|r| { r.readings.truncate(3); let f = r.readings[0].clone(); r.readings.push(f); }), "too_few_positions", "readings"),
         ("a position off the spacing", Box::new(|r| r.readings[2].angle_deg = 130.0), "positions_not_equally_spaced", "readings[2].angle_deg"),
         ("a position twice", Box::new(|r| r.readings[3].angle_deg = 60.0), "positions_not_equally_spaced", "readings[3].angle_deg"),
+        // The first reading off: the others agree on the spacing (session 16).
+        ("the first position off", Box::new(|r| r.readings[0].angle_deg = 7.0), "positions_not_equally_spaced", "readings[0].angle_deg"),
+        ("the first position off and repeated", Box::new(|r| r.readings[0].angle_deg = 120.0), "positions_not_equally_spaced", "readings[2].angle_deg"),
         ("zero speed", Box::new(|r| r.speed_rpm = 0.0), "invalid_value", "speed_rpm"),
         ("negative load", Box::new(|r| r.journal_load_kg = -1.0), "invalid_value", "journal_load_kg"),
         ("zero trial mass", Box::new(|r| r.trial.mass_g = 0.0), "invalid_value", "trial.mass_g"),
@@ -229,4 +232,43 @@ fn bad_requests_are_refused_naming_the_field() {
             "{name}: {err:?}"
         );
     }
+}
+
+#[test]
+fn the_reading_off_the_spacing_most_readings_share_is_named_even_when_it_is_the_first() {
+    let rotor = Rotor::new(120.0, 300.0, Conventions::default());
+    let base = || request(&rotor, 1.5 * allowable(), 6, true, None);
+    // The grid through readings[0] used to be the reference: 7° made every
+    // other reading look off and readings[1], a correct one, was named.
+    let mut req = base();
+    req.readings[0].angle_deg = 7.0;
+    let err = check(&req).unwrap_err();
+    assert_eq!(
+        err.field.as_deref(),
+        Some("readings[0].angle_deg"),
+        "{err:?}"
+    );
+    assert!(err.message.contains("60.0° apart"), "{}", err.message);
+    assert!(err.message.contains("7°"), "{}", err.message);
+    // Two readings off: the first is the field, the message lists the other.
+    let mut req = base();
+    req.readings[0].angle_deg = 7.0;
+    req.readings[4].angle_deg = 250.0;
+    let err = check(&req).unwrap_err();
+    assert_eq!(
+        err.field.as_deref(),
+        Some("readings[0].angle_deg"),
+        "{err:?}"
+    );
+    assert!(err.message.contains("readings[4]"), "{}", err.message);
+    // A repeat names the later reading and the one it repeats.
+    let mut req = base();
+    req.readings[5].angle_deg = 120.0;
+    let err = check(&req).unwrap_err();
+    assert_eq!(
+        err.field.as_deref(),
+        Some("readings[5].angle_deg"),
+        "{err:?}"
+    );
+    assert!(err.message.contains("readings[2]"), "{}", err.message);
 }

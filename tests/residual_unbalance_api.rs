@@ -57,6 +57,7 @@ async fn bad_checks_get_the_contracts_error_naming_the_field() {
     let cases: Vec<(&str, Value, u16, &str, &str)> = vec![
         ("three positions", with(&|b| { b["readings"].as_array_mut().unwrap().truncate(3); }), 422, "too_few_positions", "readings"),
         ("not equally spaced", with(&|b| b["readings"][7]["angle_deg"] = json!(200.5)), 422, "positions_not_equally_spaced", "readings[7].angle_deg"),
+        ("the first position off", with(&|b| b["readings"][0]["angle_deg"] = json!(7.0)), 422, "positions_not_equally_spaced", "readings[0].angle_deg"),
         ("zero load", with(&|b| b["journal_load_kg"] = json!(0)), 422, "invalid_value", "journal_load_kg"),
         ("negative speed", with(&|b| b["speed_rpm"] = json!(-3000)), 422, "invalid_value", "speed_rpm"),
         ("negative trial mass", with(&|b| b["trial"]["mass_g"] = json!(-2)), 422, "invalid_value", "trial.mass_g"),

@@ -515,3 +515,63 @@ fn a_trial_reading_within_one_percent_of_the_reference_speed_is_paired() {
     let parsed = balancing::parse_session(&serde_json::to_vec(&session).unwrap()).unwrap();
     assert!(balancing::solve(&parsed, &SolveOptions::default()).is_ok());
 }
+
+/// The base session with the reference run at 3000 rpm and the trial runs at 3100 rpm.
+fn reference_at_another_speed() -> Value {
+    let mut s = base();
+    for (i, speed) in [(0, 3000), (1, 3100), (2, 3100)] {
+        for r in s["runs"][i]["readings"].as_array_mut().unwrap() {
+            r["speed_rpm"] = json!(speed);
+        }
+    }
+    s
+}
+
+#[test]
+fn a_trial_run_at_another_speed_than_the_reference_names_the_speed_and_states_both() {
+    let check = |s: &Value, reading: &str| {
+        let err = balancing::parse_session(&serde_json::to_vec(s).unwrap()).expect_err("refused");
+        assert_eq!(
+            (err.code, err.field.as_deref()),
+            ("unpaired_reading", Some(reading)),
+            "{err:?}"
+        );
+        for part in ["3000 rpm", "3100 rpm", "1 %", "'DE-H'"] {
+            assert!(err.message.contains(part), "{part}: {}", err.message);
+        }
+    };
+    // The reference reads nothing within 1 % of the trials' speed.
+    check(
+        &reference_at_another_speed(),
+        "runs[1].readings[0].speed_rpm",
+    );
+    // The reference also reads one sensor at the trials' speed: the others'
+    // rows were refused as `missing_reading` of the trial run (session 16).
+    let mut s = reference_at_another_speed();
+    let mut extra = s["runs"][0]["readings"][2].clone();
+    extra["speed_rpm"] = json!(3100);
+    s["runs"][0]["readings"].as_array_mut().unwrap().push(extra);
+    check(&s, "runs[1].readings[0].speed_rpm");
+    // A trial run without one of the reference's two speeds really misses it.
+    let mut s = base();
+    let at_3100: Vec<Value> = s["runs"][0]["readings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            let mut r = r.clone();
+            r["speed_rpm"] = json!(3100);
+            r
+        })
+        .collect();
+    s["runs"][0]["readings"]
+        .as_array_mut()
+        .unwrap()
+        .extend(at_3100);
+    let err = balancing::parse_session(&serde_json::to_vec(&s).unwrap()).expect_err("refused");
+    assert_eq!(
+        (err.code, err.field.as_deref()),
+        ("missing_reading", Some("runs[1].readings")),
+        "{err:?}"
+    );
+}

@@ -63,8 +63,8 @@ pub(super) fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
     best.map(|(q, _)| q)
 }
 
-/// Place every reading of run `i` in its cell, in place of its sensor index
-/// in `cells`. No chaining (issue 12): every point, all runs together, spans
+/// Place every reading of run `i = runs[k]` in its cell, in place of its
+/// sensor index in `cells`; `k + 1` stamps the run in `seen`. No chaining (issue 12): every point, all runs together, spans
 /// at most 1 % from its lowest to its highest speed. `span` starts as the
 /// reference's speeds; in `runs` order, the first reading that would stretch
 /// it further is rejected, so a speed 1 % from another sensor's is never
@@ -72,14 +72,15 @@ pub(super) fn nearest_point(points: &[Vec<f64>], speed: f64) -> Option<usize> {
 /// had a reading there, and that reading: a repeat within a run is a duplicate.
 fn place_run(
     session: &Session,
-    i: usize,
-    stamp: u32,
+    runs: &[usize],
+    k: usize,
     points: &[Vec<f64>],
     span: &mut [(f64, f64)],
     seen: &mut [(u32, u32)],
     cells: &mut [u32],
 ) -> Result<(), InputError> {
     let nsens = session.sensors.len();
+    let (i, stamp) = (runs[k], k as u32 + 1);
     // The point of the previous reading's speed: the sensors of one speed
     // usually follow each other, and the search is a function of the speed.
     // A repeated speed is in its point's span already (spans only grow, and
@@ -91,7 +92,8 @@ fn place_run(
             Some((speed, p)) if speed == r.speed_rpm => p,
             _ => {
                 let point = nearest_point(points, r.speed_rpm).ok_or_else(|| {
-                    InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with", r.speed_rpm))
+                    let read = reference_read(session, runs[0], &r.sensor, r.speed_rpm);
+                    InputError::invalid("unpaired_reading", format!("{}.speed_rpm", f()), format!("the reference run has no reading within 1 % of {} rpm to pair this one with{read}", r.speed_rpm))
                 })?;
                 let (lo, hi) = span[point];
                 let (lo, hi) = (lo.min(r.speed_rpm), hi.max(r.speed_rpm));
@@ -116,6 +118,27 @@ fn place_run(
         cells[j] = cell as u32;
     }
     Ok(())
+}
+
+/// What the reference run read of `sensor` nearest to `speed`, for a reading
+/// of a trial run at `speed` that nothing pairs with: "; it read sensor 'S' at
+/// N rpm (x % from `speed`) ...", or nothing if it never read the sensor.
+/// Only on the error path: a scan of the reference's readings.
+fn reference_read(session: &Session, reference: usize, sensor: &str, speed: f64) -> String {
+    let rel = |m: f64| (speed - m).abs() / m;
+    let nearest = session.runs[reference]
+        .readings
+        .iter()
+        .filter(|r| r.sensor == sensor)
+        .map(|r| r.speed_rpm)
+        .min_by(|&a, &b| rel(a).total_cmp(&rel(b)));
+    match nearest {
+        Some(m) => format!(
+            "; it read sensor '{sensor}' at {m} rpm, {:.1} % from {speed} rpm, and readings pair only within 1 %: correct this reading's speed (or the reference run's)",
+            100.0 * rel(m)
+        ),
+        None => String::new(),
+    }
 }
 
 /// The paired rows: rows ordered by (point, sensor), the reading index of
@@ -149,15 +172,7 @@ pub(super) fn pair(
     for (k, &i) in runs.iter().enumerate() {
         let r = range(i);
         let cells = &mut fields.sensor[r];
-        place_run(
-            session,
-            i,
-            k as u32 + 1,
-            points,
-            &mut span,
-            &mut seen,
-            cells,
-        )?;
+        place_run(session, runs, k, points, &mut span, &mut seen, cells)?;
     }
     let cells = &fields.sensor;
 
@@ -208,6 +223,33 @@ pub(super) fn pair(
         for (a, row) in rows.iter().enumerate() {
             if let Some(k) = (0..nruns).position(|k| index[k * nrows + a] == u32::MAX) {
                 let i = runs[k];
+                // The run read this sensor at a speed the reference did not:
+                // most likely a speed typed wrong, so that speed is named.
+                let off_speed = cells[range(i)]
+                    .iter()
+                    .enumerate()
+                    .filter(|&(_, &c)| c as usize % nsens == row.sensor && row_of[c as usize] == 0)
+                    .map(|(j, _)| j)
+                    .min_by(|&x, &y| {
+                        let gap = |j: usize| {
+                            (session.runs[i].readings[j].speed_rpm / row.speed_rpm)
+                                .ln()
+                                .abs()
+                        };
+                        gap(x).total_cmp(&gap(y))
+                    });
+                if let Some(j) = off_speed {
+                    let r = &session.runs[i].readings[j];
+                    let read = reference_read(session, runs[0], &r.sensor, r.speed_rpm);
+                    return Err(InputError::invalid(
+                        "unpaired_reading",
+                        format!("runs[{i}].readings[{j}].speed_rpm"),
+                        format!(
+                            "run '{}' read sensor '{}' at {} rpm, where the reference run has no reading of it to pair with{read}",
+                            session.runs[i].id, r.sensor, r.speed_rpm
+                        ),
+                    ));
+                }
                 return Err(InputError::invalid(
                     "missing_reading",
                     format!("runs[{i}].readings"),

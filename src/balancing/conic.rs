@@ -149,16 +149,14 @@ pub fn solve_cone_with(
         .filter_map(|(k, &j)| max_abs[j].map(|m| (k, m / (beta * d[k]))))
         .collect();
     // Bounds that cannot bind are left out: a huge one stalled Clarabel (`loose`).
-    let bounds = loose::drop_loose(&a_s, &b_s, bounds);
-    let (y, iterations, status) = match (objective, strategy) {
-        (Objective::MinMax, Strategy::ActiveSet) => {
-            active_set::min_max(&a_s, &b_s, &bounds, limits)?
-        }
+    let program = |bounds: &[(usize, f64)]| match (objective, strategy) {
+        (Objective::MinMax, Strategy::ActiveSet) => active_set::min_max(&a_s, &b_s, bounds, limits),
         _ => {
             let all: Vec<usize> = (0..rows).collect();
-            program::solve_on(&a_s, &b_s, objective, &bounds, &all, limits)?
+            program::solve_on(&a_s, &b_s, objective, bounds, &all, limits)
         }
     };
+    let (y, iterations, status) = loose::solve(&a_s, &b_s, &bounds, program)?;
     let mut x = DVector::zeros(planes);
     let mut bound_active = vec![false; planes];
     for (k, &j) in live.iter().enumerate() {

@@ -237,38 +237,27 @@ fn bad_requests_are_refused_naming_the_field() {
 #[test]
 fn the_reading_off_the_spacing_most_readings_share_is_named_even_when_it_is_the_first() {
     let rotor = Rotor::new(120.0, 300.0, Conventions::default());
-    let base = || request(&rotor, 1.5 * allowable(), 6, true, None);
-    // The grid through readings[0] used to be the reference: 7° made every
-    // other reading look off and readings[1], a correct one, was named.
-    let mut req = base();
-    req.readings[0].angle_deg = 7.0;
-    let err = check(&req).unwrap_err();
-    assert_eq!(
-        err.field.as_deref(),
-        Some("readings[0].angle_deg"),
-        "{err:?}"
-    );
-    assert!(err.message.contains("60.0° apart"), "{}", err.message);
-    assert!(err.message.contains("7°"), "{}", err.message);
-    // Two readings off: the first is the field, the message lists the other.
-    let mut req = base();
-    req.readings[0].angle_deg = 7.0;
-    req.readings[4].angle_deg = 250.0;
-    let err = check(&req).unwrap_err();
-    assert_eq!(
-        err.field.as_deref(),
-        Some("readings[0].angle_deg"),
-        "{err:?}"
-    );
-    assert!(err.message.contains("readings[4]"), "{}", err.message);
-    // A repeat names the later reading and the one it repeats.
-    let mut req = base();
-    req.readings[5].angle_deg = 120.0;
-    let err = check(&req).unwrap_err();
-    assert_eq!(
-        err.field.as_deref(),
-        Some("readings[5].angle_deg"),
-        "{err:?}"
-    );
-    assert!(err.message.contains("readings[2]"), "{}", err.message);
+    // (positions moved: (reading, angle)), the field named, what the message says.
+    type Case<'a> = (&'a [(usize, f64)], &'a str, &'a [&'a str]);
+    #[rustfmt::skip]
+    let cases: [Case; 3] = [
+        // The grid through readings[0] used to be the reference: 7° made every
+        // other reading look off and readings[1], a correct one, was named.
+        (&[(0, 7.0)], "readings[0].angle_deg", &["60.0° apart", "7°"]),
+        // Two readings off: the first is the field, the message lists the other.
+        (&[(0, 7.0), (4, 250.0)], "readings[0].angle_deg", &["readings[4]"]),
+        // A repeat names the later reading and the one it repeats.
+        (&[(5, 120.0)], "readings[5].angle_deg", &["readings[2]"]),
+    ];
+    for (moved, field, says) in cases {
+        let mut req = request(&rotor, 1.5 * allowable(), 6, true, None);
+        for &(k, angle) in moved {
+            req.readings[k].angle_deg = angle;
+        }
+        let err = check(&req).unwrap_err();
+        assert_eq!(err.field.as_deref(), Some(field), "{moved:?}: {err:?}");
+        for part in says {
+            assert!(err.message.contains(part), "{moved:?}: {}", err.message);
+        }
+    }
 }

@@ -30,7 +30,7 @@ use rand::rngs::StdRng;
 use rand::Rng;
 use serde_json::{json, Value};
 
-use crate::common::Server;
+use crate::common::{post, send, Server};
 
 /// The values put in place of a number.
 const EXTREMES: [f64; 24] = [
@@ -150,6 +150,34 @@ fn judge(what: &str, status: u16, answer: &Value, body: &Value) -> bool {
     false
 }
 
+/// Where a sweep's requests go; every answer is judged (`judge`).
+#[derive(Clone, Copy)]
+struct Job<'a> {
+    server: &'a Server,
+    client: &'a reqwest::Client,
+}
+
+impl Job<'_> {
+    async fn store(&self, session: &Value) -> String {
+        let (status, _, created) =
+            post(self.client, &self.server.url("/api/v1/sessions"), session).await;
+        assert_eq!(status, 201, "{created}");
+        created["id"].as_str().unwrap().to_string()
+    }
+
+    /// POST (or PUT) `body` to `path`, judged; whether it was a 2xx, and the answer.
+    async fn send(&self, put: bool, path: &str, body: &Value) -> (bool, Value) {
+        let url = self.server.url(path);
+        let req = if put {
+            self.client.put(url)
+        } else {
+            self.client.post(url)
+        };
+        let (status, _, answer) = send(req.json(body)).await;
+        (judge(path, status, &answer, body), answer)
+    }
+}
+
 /// `requests` mutated stand-alone bodies, then `requests / 2` against stored
 /// resources (module doc); panics on the first fault, naming the body, and
 /// returns how many answers were 2xx per body.
@@ -159,7 +187,8 @@ pub async fn never_a_server_error(
     rng: &mut StdRng,
     requests: usize,
 ) -> Vec<usize> {
-    let mut ok = stateless::sweep(server, client, rng, requests).await;
-    ok.extend(stored::sweep(server, client, rng, requests / 2).await);
+    let job = Job { server, client };
+    let mut ok = stateless::sweep(&job, rng, requests).await;
+    ok.extend(stored::sweep(&job, rng, requests / 2).await);
     ok
 }

@@ -8,7 +8,7 @@ use rand::rngs::StdRng;
 use rand::Rng;
 use serde_json::{json, Value};
 
-use super::{judge, mutate};
+use super::{mutate, Job};
 use crate::common::{example, post, Server};
 
 /// The session of the examples with every optional number filled in.
@@ -138,13 +138,8 @@ async fn bodies(server: &Server, client: &reqwest::Client) -> Vec<(&'static str,
 }
 
 /// `requests` mutated stand-alone bodies; 2xx answers per body.
-pub(super) async fn sweep(
-    server: &Server,
-    client: &reqwest::Client,
-    rng: &mut StdRng,
-    requests: usize,
-) -> Vec<usize> {
-    let bodies = bodies(server, client).await;
+pub(super) async fn sweep(job: &Job<'_>, rng: &mut StdRng, requests: usize) -> Vec<usize> {
+    let bodies = bodies(job.server, job.client).await;
     let mut ok = vec![0; bodies.len()];
     for n in 0..requests {
         let k = rng.gen_range(0..bodies.len());
@@ -153,8 +148,7 @@ pub(super) async fn sweep(
         if *path == "/api/v1/machines" {
             body["id"] = json!(format!("NUMBERS-{n}"));
         }
-        let (status, _, answer) = post(client, &server.url(path), &body).await;
-        if judge(path, status, &answer, &body) {
+        if job.send(false, path, &body).await.0 {
             ok[k] += 1;
         }
     }

@@ -7,11 +7,11 @@
 
 use rand::rngs::StdRng;
 use rand::Rng;
-use serde_json::{json, Value};
+use serde_json::json;
 
 use super::stateless::{coefficients, reference_only, rich_session};
-use super::{judge, mutate};
-use crate::common::{post, send, Server};
+use super::{mutate, Job};
+use crate::common::post;
 
 const MACHINE: &str = "NUMBERS-M";
 
@@ -19,41 +19,10 @@ const MACHINE: &str = "NUMBERS-M";
 /// session holds at most 200 runs).
 const RUNS_PER_SESSION: usize = 20;
 
-struct Job<'a> {
-    server: &'a Server,
-    client: &'a reqwest::Client,
-}
-
-impl Job<'_> {
-    async fn store(&self, session: &Value) -> String {
-        let (status, _, created) =
-            post(self.client, &self.server.url("/api/v1/sessions"), session).await;
-        assert_eq!(status, 201, "{created}");
-        created["id"].as_str().unwrap().to_string()
-    }
-
-    /// POST (or PUT) `body` to `path`, judged; whether it was a 2xx, and the answer.
-    async fn send(&self, put: bool, path: &str, body: &Value) -> (bool, Value) {
-        let url = self.server.url(path);
-        let req = if put {
-            self.client.put(url)
-        } else {
-            self.client.post(url)
-        };
-        let (status, _, answer) = send(req.json(body)).await;
-        (judge(path, status, &answer, body), answer)
-    }
-}
-
 /// `requests` mutated bodies against stored resources, with the requests
 /// each success leads to; 2xx answers per kind of body.
-pub(super) async fn sweep(
-    server: &Server,
-    client: &reqwest::Client,
-    rng: &mut StdRng,
-    requests: usize,
-) -> Vec<usize> {
-    let job = Job { server, client };
+pub(super) async fn sweep(job: &Job<'_>, rng: &mut StdRng, requests: usize) -> Vec<usize> {
+    let Job { server, client } = *job;
     let mut rich = rich_session();
     rich["machine"] = json!(MACHINE);
     let machine = json!({"id": MACHINE, "name": "numbers"});

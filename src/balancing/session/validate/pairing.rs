@@ -16,6 +16,9 @@ use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session};
 use crate::balancing::phasor::reading_in;
 
+mod unpaired;
+use unpaired::reference_read;
+
 /// Cluster sorted speeds: a new point starts where a speed is more than 1 % above the point's lowest.
 pub(super) fn cluster_speeds(mut speeds: Vec<f64>) -> Vec<Vec<f64>> {
     speeds.sort_by(f64::total_cmp);
@@ -120,27 +123,6 @@ fn place_run(
     Ok(())
 }
 
-/// What the reference run read of `sensor` nearest to `speed`, for a reading
-/// of a trial run at `speed` that nothing pairs with: "; it read sensor 'S' at
-/// N rpm (x % from `speed`) ...", or nothing if it never read the sensor.
-/// Only on the error path: a scan of the reference's readings.
-fn reference_read(session: &Session, reference: usize, sensor: &str, speed: f64) -> String {
-    let rel = |m: f64| (speed - m).abs() / m;
-    let nearest = session.runs[reference]
-        .readings
-        .iter()
-        .filter(|r| r.sensor == sensor)
-        .map(|r| r.speed_rpm)
-        .min_by(|&a, &b| rel(a).total_cmp(&rel(b)));
-    match nearest {
-        Some(m) => format!(
-            "; it read sensor '{sensor}' at {m} rpm, {:.1} % from {speed} rpm, and readings pair only within 1 %: correct this reading's speed (or the reference run's)",
-            100.0 * rel(m)
-        ),
-        None => String::new(),
-    }
-}
-
 /// The paired rows: rows ordered by (point, sensor), the reading index of
 /// every row and run (runs × rows, a run's rows together) and `Y` (rows × runs).
 pub(super) struct Paired {
@@ -223,40 +205,13 @@ pub(super) fn pair(
         for (a, row) in rows.iter().enumerate() {
             if let Some(k) = (0..nruns).position(|k| index[k * nrows + a] == u32::MAX) {
                 let i = runs[k];
-                // The run read this sensor at a speed the reference did not:
-                // most likely a speed typed wrong, so that speed is named.
-                let off_speed = cells[range(i)]
-                    .iter()
-                    .enumerate()
-                    .filter(|&(_, &c)| c as usize % nsens == row.sensor && row_of[c as usize] == 0)
-                    .map(|(j, _)| j)
-                    .min_by(|&x, &y| {
-                        let gap = |j: usize| {
-                            (session.runs[i].readings[j].speed_rpm / row.speed_rpm)
-                                .ln()
-                                .abs()
-                        };
-                        gap(x).total_cmp(&gap(y))
-                    });
-                if let Some(j) = off_speed {
-                    let r = &session.runs[i].readings[j];
-                    let read = reference_read(session, runs[0], &r.sensor, r.speed_rpm);
-                    return Err(InputError::invalid(
-                        "unpaired_reading",
-                        format!("runs[{i}].readings[{j}].speed_rpm"),
-                        format!(
-                            "run '{}' read sensor '{}' at {} rpm, where the reference run has no reading of it to pair with{read}",
-                            session.runs[i].id, r.sensor, r.speed_rpm
-                        ),
-                    ));
-                }
-                return Err(InputError::invalid(
-                    "missing_reading",
-                    format!("runs[{i}].readings"),
-                    format!(
-                        "run '{}' has no reading of sensor '{}' at {} rpm, which the reference run has",
-                        session.runs[i].id, session.sensors[row.sensor].id, row.speed_rpm
-                    ),
+                return Err(unpaired::missing(
+                    session,
+                    runs,
+                    k,
+                    row,
+                    &cells[range(i)],
+                    &row_of,
                 ));
             }
         }

@@ -134,7 +134,7 @@ async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_fi
     // The answer the service gives to a bad set-up when the zero run is posted.
     let script = r#"
         const [done] = arguments;
-        import('/static/js/fields.js').then((m) => done(m.markServerError(
+        import('/static/js/page/fields.js').then((m) => done(m.markServerError(
           { field: 'planes[1].radius_mm', message: 'the radius of 1e9 mm is beyond the plausible limit' },
           'runs[0].')));
     "#;
@@ -266,7 +266,7 @@ async fn typed_numbers_are_accepted_or_refused_as_the_table_says(stand: &Stand) 
         .collect();
     let script = r#"
         const [cases, done] = arguments;
-        import('/static/js/num.js').then((m) => done(cases.map(([text, kind]) => m.check(text, kind))));
+        import('/static/js/page/num.js').then((m) => done(cases.map(([text, kind]) => m.check(text, kind))));
     "#;
     let got = b
         .client

@@ -219,7 +219,7 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and
     // The contract's example correction, rendered by the page's own module.
     let script = r#"
         const [done] = arguments;
-        import('/static/js/solve.js').then((m) => {
+        import('/static/js/steps/solve.js').then((m) => {
           const c = { plane: 'A', mass_g: 52.4, angle_deg: 141.0, unbalance_gmm: 18340,
                       uncertainty: { mass_g: [48.3, 56.5], angle_deg: [136.2, 145.8],
                                      covariance_g2: [[4.1, 0.3], [0.3, 3.2]] } };

@@ -106,7 +106,12 @@ async fn health_and_the_web_form_need_no_token() {
     let dir = tempfile::tempdir().unwrap();
     let server = server_with_tokens(dir.path()).await;
     let client = reqwest::Client::new();
-    for path in ["/healthz", "/", "/static/js/api.js", "/static/style.css"] {
+    for path in [
+        "/healthz",
+        "/",
+        "/static/js/job/api.js",
+        "/static/style.css",
+    ] {
         let res = client.get(server.url(path)).send().await.unwrap();
         assert_eq!(res.status(), 200, "{path}");
     }

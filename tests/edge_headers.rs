@@ -35,7 +35,7 @@ async fn api_answers_are_not_sniffed_cached_or_framed_and_the_form_allows_only_i
             "{path}"
         );
     }
-    for path in ["/", "/static/js/api.js"] {
+    for path in ["/", "/static/js/job/api.js"] {
         let res = client.get(server.url(path)).send().await.unwrap();
         let h = res.headers();
         assert_eq!(h["x-content-type-options"], "nosniff", "{path}");

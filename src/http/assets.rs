@@ -31,30 +31,30 @@ const JS: &str = "text/javascript; charset=utf-8";
 static ASSETS: &[Asset] = &[
     asset!("index.html", "text/html; charset=utf-8"),
     asset!("style.css", "text/css; charset=utf-8"),
-    asset!("js/answer.js", JS),
-    asset!("js/api.js", JS),
     asset!("js/app.js", JS),
-    asset!("js/bode.js", JS),
-    asset!("js/csv.js", JS),
-    asset!("js/dom.js", JS),
-    asset!("js/fields.js", JS),
-    asset!("js/keep.js", JS),
-    asset!("js/machines.js", JS),
-    asset!("js/num.js", JS),
-    asset!("js/options.js", JS),
-    asset!("js/picture.js", JS),
-    asset!("js/planes.js", JS),
-    asset!("js/plots.js", JS),
-    asset!("js/polar.js", JS),
-    asset!("js/report.js", JS),
-    asset!("js/runs.js", JS),
-    asset!("js/sessions.js", JS),
-    asset!("js/setup.js", JS),
-    asset!("js/solve.js", JS),
-    asset!("js/state.js", JS),
-    asset!("js/token.js", JS),
-    asset!("js/trial.js", JS),
-    asset!("js/words.js", JS),
+    asset!("js/answer/answer.js", JS),
+    asset!("js/answer/planes.js", JS),
+    asset!("js/answer/words.js", JS),
+    asset!("js/job/api.js", JS),
+    asset!("js/job/keep.js", JS),
+    asset!("js/job/state.js", JS),
+    asset!("js/job/token.js", JS),
+    asset!("js/page/dom.js", JS),
+    asset!("js/page/fields.js", JS),
+    asset!("js/page/num.js", JS),
+    asset!("js/plots/bode.js", JS),
+    asset!("js/plots/plots.js", JS),
+    asset!("js/plots/polar.js", JS),
+    asset!("js/steps/csv.js", JS),
+    asset!("js/steps/machines.js", JS),
+    asset!("js/steps/options.js", JS),
+    asset!("js/steps/picture.js", JS),
+    asset!("js/steps/report.js", JS),
+    asset!("js/steps/runs.js", JS),
+    asset!("js/steps/sessions.js", JS),
+    asset!("js/steps/setup.js", JS),
+    asset!("js/steps/solve.js", JS),
+    asset!("js/steps/trial.js", JS),
 ];
 
 /// Scripts and styles from this origin only: even if user text ever reached
@@ -136,16 +136,52 @@ mod tests {
         assert_eq!(on_disk.len(), ASSETS.len(), "ASSETS lists a file twice");
     }
 
+    /// The path under `static/` of `module` (`./x.js` or `../dir/x.js`) imported
+    /// by the file at `from`, as the browser resolves it; None for any other form.
+    fn resolve(from: &str, module: &str) -> Option<String> {
+        let mut parts: Vec<&str> = from.split('/').collect();
+        parts.pop(); // the importing file itself
+        let mut rest = module;
+        if let Some(r) = rest.strip_prefix("./") {
+            rest = r;
+        } else if !rest.starts_with("../") {
+            return None;
+        }
+        while let Some(r) = rest.strip_prefix("../") {
+            parts.pop()?;
+            rest = r;
+        }
+        parts.push(rest);
+        Some(parts.join("/"))
+    }
+
+    #[test]
+    fn relative_imports_resolve_as_the_browser_does() {
+        assert_eq!(
+            resolve("js/app.js", "./page/dom.js").as_deref(),
+            Some("js/page/dom.js")
+        );
+        assert_eq!(
+            resolve("js/steps/runs.js", "./csv.js").as_deref(),
+            Some("js/steps/csv.js")
+        );
+        assert_eq!(
+            resolve("js/steps/runs.js", "../job/api.js").as_deref(),
+            Some("js/job/api.js")
+        );
+        assert_eq!(resolve("js/app.js", "../../x.js"), None);
+        assert_eq!(resolve("js/app.js", "/static/js/x.js"), None);
+    }
+
     #[test]
     fn every_imported_module_is_embedded() {
         for asset in ASSETS.iter().filter(|a| a.path.ends_with(".js")) {
             for line in asset.body.lines().filter(|l| l.starts_with("import ")) {
-                let module = line
+                let path = line
                     .split('"')
                     .nth(1)
-                    .and_then(|m| m.strip_prefix("./"))
+                    .and_then(|m| resolve(asset.path, m))
                     .unwrap_or_else(|| panic!("{}: unexpected import {line}", asset.path));
-                let path = format!("js/{module}");
                 assert!(
                     find(&path).is_some(),
                     "{} imports {path}, which is not embedded",

@@ -2,17 +2,25 @@
 // the browser's Back/Forward between them (each step is a history entry:
 // `#session=ID&step=runs`, `#step=setup`, `#machine=ID`), reopening a stored
 // session from the address, and work kept across a reload (keep.js).
+//
+// The modules beside it: page/ builds the page (elements, inputs that check
+// themselves, numbers as typed and shown); job/ holds the job (its state, what
+// is kept in this browser, the service's API and its access token); steps/ has
+// a module per step (set-up, runs, solve, report, sessions, machines) and the
+// parts of a step (CSV readings, trial weight, solve options, conventions
+// picture); answer/ shows a solve's answer in words and pictures; plots/ draws
+// the polar, Bode and Nyquist plots.
 
-import { $, $$, replace, h } from "./dom.js";
-import { api, unwrapSession } from "./api.js";
-import { state, onChange, resetJob, loadSession } from "./state.js";
-import { keep, keepNow, kept, forget } from "./keep.js";
-import { renderSetup } from "./setup.js";
-import { renderRuns, newDraft } from "./runs.js";
-import { renderSolve } from "./solve.js";
-import { renderReport } from "./report.js";
-import { renderSessions } from "./sessions.js";
-import { renderMachines } from "./machines.js";
+import { $, $$, replace, h } from "./page/dom.js";
+import { api, unwrapSession } from "./job/api.js";
+import { state, onChange, resetJob, loadSession } from "./job/state.js";
+import { keep, keepNow, kept, forget } from "./job/keep.js";
+import { renderSetup } from "./steps/setup.js";
+import { renderRuns, newDraft } from "./steps/runs.js";
+import { renderSolve } from "./steps/solve.js";
+import { renderReport } from "./steps/report.js";
+import { renderSessions } from "./steps/sessions.js";
+import { renderMachines } from "./steps/machines.js";
 
 const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines"];
 let current = "setup";

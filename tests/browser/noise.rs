@@ -138,7 +138,7 @@ pub async fn the_noise_pull_is_shown_beside_the_fitted_weight_only_when_the_nois
     let csv = b
         .client
         .execute_async(
-            "const [done] = arguments; import('/static/js/sessions.js').then((m) => done(m.resultsCsv()));",
+            "const [done] = arguments; import('/static/js/steps/sessions.js').then((m) => done(m.resultsCsv()));",
             vec![],
         )
         .await

@@ -170,10 +170,14 @@ pub async fn the_form_weighs_little_and_asks_nothing_of_other_hosts(stand: &Stan
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("static");
     let mut files = Vec::new();
     let mut on_disk = 0;
-    for dir in [root.clone(), root.join("js")] {
+    // Every folder under static/ (static/js/ has subfolders: page/, job/, steps/, …).
+    let mut dirs = vec![root.clone()];
+    while let Some(dir) = dirs.pop() {
         for entry in std::fs::read_dir(&dir).unwrap() {
             let path = entry.unwrap().path();
-            if path.is_file() {
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.is_file() {
                 let text = std::fs::read_to_string(&path).unwrap();
                 on_disk += text.len() as u64;
                 let other = text

@@ -38,7 +38,7 @@ pub async fn typed_mistakes_are_refused_with_the_reason(b: &Browser) {
     assert!(decimal.contains("1,234 is refused"), "{decimal}");
     let got = js(
         b,
-        "return import('/static/js/num.js').then((m) => [m.parseSpeeds('1480, 2950').value, m.parseSpeeds('1480;2950').value, m.check('370', 'phase').error, m.check('-10', 'phase').error, m.check('1,234', 'amplitude').error, m.check('2,5', 'amplitude').value])",
+        "return import('/static/js/page/num.js').then((m) => [m.parseSpeeds('1480, 2950').value, m.parseSpeeds('1480;2950').value, m.check('370', 'phase').error, m.check('-10', 'phase').error, m.check('1,234', 'amplitude').error, m.check('2,5', 'amplitude').value])",
     )
     .await;
     assert_eq!(got[0], json!([1480, 2950]));

@@ -4,10 +4,10 @@
 // Separated by commas (decimals with a point) or by semicolons (decimals with
 // a point or a comma, as spreadsheets with a decimal comma write them).
 
-import { h, $ } from "./dom.js";
-import { banner } from "./fields.js";
-import { parseNumber, RULES } from "./num.js";
-import { state, rows } from "./state.js";
+import { h, $ } from "../page/dom.js";
+import { banner } from "../page/fields.js";
+import { parseNumber, RULES } from "../page/num.js";
+import { state, rows } from "../job/state.js";
 
 export const CSV_SHAPES = "A CSV file of readings has a header row and one of two shapes: a row per reading (columns speed, sensor, amplitude, phase, and optionally run) or a column per run (speed, sensor, then “<run> amplitude” and “<run> phase” for each run, e.g. “zero amplitude”). Separate by commas, or by semicolons when decimals are written with a comma.";
 

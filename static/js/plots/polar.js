@@ -4,8 +4,8 @@
 // frame (method 1.1: lag φ is drawn at -φ, lead φ at +φ) and the angle labels
 // are written in the session's own phase convention.
 
-import { s, h } from "./dom.js";
-import { fmt, unitLabel, wrap360 } from "./num.js";
+import { s, h } from "../page/dom.js";
+import { fmt, unitLabel, wrap360 } from "../page/num.js";
 
 const SIZE = 300;
 const C = SIZE / 2;

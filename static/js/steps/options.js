@@ -2,10 +2,10 @@
 // plane, sensors and speeds left out, the readings' noise, which run the rotor
 // is corrected from (a trim), stored coefficients, and the kit fit.
 
-import { h } from "./dom.js";
-import { numberInput } from "./fields.js";
-import { fmt } from "./num.js";
-import { state } from "./state.js";
+import { h } from "../page/dom.js";
+import { numberInput } from "../page/fields.js";
+import { fmt } from "../page/num.js";
+import { state } from "../job/state.js";
 
 /** Stored runs whose state a trim can start from: every run with weights. */
 export function runsWithWeights() {

@@ -4,13 +4,13 @@
 // with units, the coefficients used, plots, the date and signature lines.
 // Print CSS shows only this section on paper.
 
-import { h, replace, $ } from "./dom.js";
-import { fmt, fmtAngle, unitLabel } from "./num.js";
-import { state, rows, readingFor } from "./state.js";
+import { h, replace, $ } from "../page/dom.js";
+import { fmt, fmtAngle, unitLabel } from "../page/num.js";
+import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, summaryBox, warningsBox } from "./solve.js";
-import { verdict, trimWords, runChecks, planePictures, doubts } from "./answer.js";
-import { plotsSection } from "./plots.js";
+import { verdict, trimWords, runChecks, planePictures, doubts } from "../answer/answer.js";
+import { plotsSection } from "../plots/plots.js";
 
 // The kit weights to fit, when the solution has a discrete fit (`fit`).
 function fitTable(sol) {

@@ -2,11 +2,11 @@
 // sensors and speeds. Fixed once the session is stored (the API has no way to
 // change a stored set-up; export, edit and import to start a changed copy).
 
-import { h, replace, $ } from "./dom.js";
-import { numberInput, textInput, selectInput, validateAll, mark, clearMarks, banner } from "./fields.js";
-import { parseSpeeds, UNITS, SPEEDS_RULE, DECIMAL_RULE, check } from "./num.js";
+import { h, replace, $ } from "../page/dom.js";
+import { numberInput, textInput, selectInput, validateAll, mark, clearMarks, banner } from "../page/fields.js";
+import { parseSpeeds, UNITS, SPEEDS_RULE, DECIMAL_RULE, check } from "../page/num.js";
 import { conventionsPicture } from "./picture.js";
-import { state, setupLocked } from "./state.js";
+import { state, setupLocked } from "../job/state.js";
 
 const PHASES = [
   ["lag", "Phase lag (most analysers)"],

@@ -3,11 +3,11 @@
 // a new job with the set-up of its last one, and a trim job from its stored
 // coefficients that needs only a reference run.
 
-import { h, s, replace } from "./dom.js";
-import { banner, textInput, numberInput } from "./fields.js";
-import { fmt } from "./num.js";
-import { api, unwrapSession } from "./api.js";
-import { state, setupOf, emptySetup } from "./state.js";
+import { h, s, replace } from "../page/dom.js";
+import { banner, textInput, numberInput } from "../page/fields.js";
+import { fmt } from "../page/num.js";
+import { api, unwrapSession } from "../job/api.js";
+import { state, setupOf, emptySetup } from "../job/state.js";
 
 const when = (t) => (t ? String(t).replace("T", " ").replace(/:\d\d(\.\d+)?Z$/, " UTC") : "");
 

@@ -5,8 +5,8 @@
 // conventions picture draws it: the rotor turning clockwise in the picture, so
 // angles against rotation run counter-clockwise.
 
-import { h, s } from "./dom.js";
-import { fmt, fmtAngle } from "./num.js";
+import { h, s } from "../page/dom.js";
+import { fmt, fmtAngle } from "../page/num.js";
 
 const SIZE = 240;
 const C = SIZE / 2;

@@ -3,13 +3,13 @@
 // when the job spans one; then the polar plot per sensor and speed, with a
 // filter so that forty plots do not bury the one wanted.
 
-import { h, replace } from "./dom.js";
-import { fmt } from "./num.js";
-import { api } from "./api.js";
-import { state, rows, readingFor, referenceRun, sessionJson } from "./state.js";
+import { h, replace } from "../page/dom.js";
+import { fmt } from "../page/num.js";
+import { api } from "../job/api.js";
+import { state, rows, readingFor, referenceRun, sessionJson } from "../job/state.js";
 import { polarPlot } from "./polar.js";
 import { bodePlot, nyquistPlot, SERIES, CHECK_COLOURS } from "./bode.js";
-import { checkRuns } from "./options.js";
+import { checkRuns } from "../steps/options.js";
 
 const near = (a, b) => Math.abs(a - b) <= 0.01 * Math.max(a, b);
 

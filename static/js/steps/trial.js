@@ -2,10 +2,10 @@
 // /trial-weights on the zero run), and the question when a trial weight goes
 // into a plane an earlier run already tried (a plane picked wrong?).
 
-import { h, $ } from "./dom.js";
-import { fmt, fmtAngle } from "./num.js";
-import { api } from "./api.js";
-import { state, sessionJson, triedPlanes } from "./state.js";
+import { h, $ } from "../page/dom.js";
+import { fmt, fmtAngle } from "../page/num.js";
+import { api } from "../job/api.js";
+import { state, sessionJson, triedPlanes } from "../job/state.js";
 
 /** The last stored run with weights: the one whose weights may still be on the rotor. */
 function previousTrial() {

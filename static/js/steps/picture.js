@@ -1,7 +1,7 @@
 // The small picture that explains the two conventions, redrawn when they change:
 // where a weight "at 90°" sits, and what "phase lag/lead" means on the signal.
 
-import { h, s } from "./dom.js";
+import { h, s } from "../page/dom.js";
 
 const R = 58;
 const CX = 100;

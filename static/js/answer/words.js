@@ -3,7 +3,7 @@
 // answer that should not be trusted as it stands (wide 95 % figures, a trial
 // that moved the vibration too little), shown greyed with the reason.
 
-import { fmt, angleDiff } from "./num.js";
+import { fmt, angleDiff } from "../page/num.js";
 
 const quoted = (message, fallback) => {
   const m = /'([^']+)'/.exec(message || "");

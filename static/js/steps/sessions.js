@@ -1,10 +1,10 @@
 // The stored sessions: the list to reopen, import and export as JSON, and the
 // readings and results as CSV.
 
-import { h, replace, download, fileStem } from "./dom.js";
-import { banner } from "./fields.js";
-import { api } from "./api.js";
-import { state, sessionJson, rows, readingFor } from "./state.js";
+import { h, replace, download, fileStem } from "../page/dom.js";
+import { banner } from "../page/fields.js";
+import { api } from "../job/api.js";
+import { state, sessionJson, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 
 /** The list endpoint is paged; take the items whatever the wrapper is called. */

@@ -3,11 +3,11 @@
 // corrected); Tab walks its cells in reading order. Storing the zero run
 // creates the session; each trial run is then appended, a corrected run is PUT.
 
-import { h, replace, $ } from "./dom.js";
-import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "./fields.js";
-import { fmt, unitLabel, DECIMAL_RULE } from "./num.js";
-import { api, ApiError } from "./api.js";
-import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "./state.js";
+import { h, replace, $ } from "../page/dom.js";
+import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "../page/fields.js";
+import { fmt, unitLabel, DECIMAL_RULE } from "../page/num.js";
+import { api, ApiError } from "../job/api.js";
+import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
 

@@ -2,14 +2,14 @@
 // (mass, angle, unbalance, split over fixed places, uncertainty), the predicted
 // residual per sensor and speed, the before/after summary and the polar plots.
 
-import { h, replace } from "./dom.js";
-import { banner, markServerError } from "./fields.js";
-import { fmt, fmtAngle, angleDiff, unitLabel } from "./num.js";
-import { api } from "./api.js";
-import { state, changed } from "./state.js";
-import { plainWarning, doubt, UNBIASED_WORDS } from "./words.js";
+import { h, replace } from "../page/dom.js";
+import { banner, markServerError } from "../page/fields.js";
+import { fmt, fmtAngle, angleDiff, unitLabel } from "../page/num.js";
+import { api } from "../job/api.js";
+import { state, changed } from "../job/state.js";
+import { plainWarning, doubt, UNBIASED_WORDS } from "../answer/words.js";
 import { optionsPanel, solveOptions } from "./options.js";
-import { answerParts } from "./answer.js";
+import { answerParts } from "../answer/answer.js";
 
 /** "52 g ± 4 g, 141° ± 5°": the 95 % intervals as a half-width around the value. */
 export function uncertaintyText(c) {

@@ -2,7 +2,7 @@
 // 401. The token is typed into a password field and kept in sessionStorage,
 // so it lasts for this tab only and never reaches the page's text.
 
-import { h } from "./dom.js";
+import { h } from "../page/dom.js";
 
 const KEY = "fieldbal.token";
 

@@ -3,13 +3,13 @@
 // doubtful figures greyed with the reason, each check run beside its
 // prediction, and the pictures. The report reuses the parts.
 
-import { h } from "./dom.js";
-import { fmt, fmtAngle } from "./num.js";
-import { state } from "./state.js";
-import { correctionsTable, summaryBox, residualTable, warningsBox } from "./solve.js";
+import { h } from "../page/dom.js";
+import { fmt, fmtAngle } from "../page/num.js";
+import { state } from "../job/state.js";
+import { correctionsTable, summaryBox, residualTable, warningsBox } from "../steps/solve.js";
 import { doubt } from "./words.js";
 import { planePicture } from "./planes.js";
-import { plotsSection } from "./plots.js";
+import { plotsSection } from "../plots/plots.js";
 
 /** The run a solution's "as found" describes: its from_run, else the zero run. */
 function baseRun(sol) {

@@ -3,8 +3,8 @@
 // each check run) and a polar (Nyquist) plot of the as-found vibration across
 // the speeds. Phases are shown in the session's own convention.
 
-import { h, s } from "./dom.js";
-import { fmt, unitLabel, wrap360 } from "./num.js";
+import { h, s } from "../page/dom.js";
+import { fmt, unitLabel, wrap360 } from "../page/num.js";
 
 const W = 520;
 const PAD_L = 52;

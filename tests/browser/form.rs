@@ -1,304 +1,325 @@
-//! Driving the form like a technician: every value is typed key by key into the
-//! real inputs (WebDriver send_keys), the grid is walked with the Tab key, and
-//! choices are made by clicking the options.
+//! End-to-end tests of the web form in a real headless Chromium: a whole
+//! balancing job typed key by key, reopening after a reload, user text that
+//! looks like HTML, errors shown at their field, and the correction without
+//! the noise's pull beside the fitted one (scenes/noise.rs). Screenshots go
+//! to `target/screenshots/`.
 
-use serde_json::Value;
-
-use super::Browser;
+use crate::harness::form::{self, field, type_run, type_setup, value_of};
+use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::Browser;
 use fantoccini::Locator;
+use serde_json::{json, Value};
 
-const TAB: &str = "\u{e004}";
-
-/// A JSON number as a technician would type it (shortest exact decimal).
-pub fn typed(v: &Value) -> String {
-    let x = v.as_f64().expect("a number");
-    format!("{x}")
+/// Solve from the runs step and compare the corrections on the page with the expected ones.
+async fn solve_and_compare(b: &Browser, expected: &Value) {
+    b.click("#step-runs button.go-solve").await;
+    solve_and_compare_here(b, expected).await;
 }
 
-/// Clear an input and type `text` into it.
-pub async fn type_into(b: &Browser, css: &str, text: &str) {
-    let el = b.wait_for(css).await;
-    el.clear().await.expect("input clears");
-    el.send_keys(text)
-        .await
-        .unwrap_or_else(|e| panic!("typing into {css}: {e}"));
-}
-
-/// Choose a select's option by clicking it.
-pub async fn choose(b: &Browser, select_css: &str, value: &str) {
-    b.click(select_css).await;
-    b.click(&format!("{select_css} option[value=\"{value}\"]"))
-        .await;
-}
-
-pub fn field(path: &str) -> String {
-    format!("[data-field=\"{path}\"]")
-}
-
-/// The value an input holds now (read in one script: a step drawn afresh
-/// between finding the input and reading it would leave a stale element).
-pub async fn value_of(b: &Browser, css: &str) -> String {
-    b.wait_for(css).await;
-    let script = format!(
-        "const e = document.querySelector({}); return e ? String(e.value ?? '') : null",
-        serde_json::to_string(css).expect("a selector")
-    );
-    let got = b.client.execute(&script, vec![]).await.expect("value read");
-    got.as_str()
-        .unwrap_or_else(|| panic!("{css} went away while being read"))
-        .to_string()
-}
-
-/// Speeds of the reference run, in order of first appearance (the grid's order).
-pub fn speeds(session: &Value) -> Vec<f64> {
-    let reference = session["runs"]
-        .as_array()
-        .expect("runs")
-        .iter()
-        .find(|r| r["weights"].as_array().is_some_and(|w| w.is_empty()))
-        .expect("a reference run");
-    let mut out: Vec<f64> = Vec::new();
-    for r in reference["readings"].as_array().expect("readings") {
-        let s = r["speed_rpm"].as_f64().expect("speed");
-        if !out.iter().any(|x| (x - s).abs() <= 0.01 * x.max(s)) {
-            out.push(s);
-        }
-    }
-    out
-}
-
-/// Type the set-up of `session` into step 1.
-pub async fn type_setup(b: &Browser, session: &Value) {
-    type_into(b, &field("name"), session["name"].as_str().expect("name")).await;
-    if let Some(machine) = session["machine"].as_str() {
-        type_into(b, &field("machine"), machine).await;
-    }
-    let speeds: Vec<String> = speeds(session).iter().map(|s| format!("{s}")).collect();
-    type_into(b, &field("speeds"), &speeds.join(" ")).await;
-    let conventions = &session["conventions"];
-    choose(
-        b,
-        &field("conventions.phase"),
-        conventions["phase"].as_str().unwrap_or("lag"),
-    )
-    .await;
-    let direction = conventions["angle_direction"]
-        .as_str()
-        .unwrap_or("against_rotation");
-    choose(b, &field("conventions.angle_direction"), direction).await;
-    for (i, plane) in session["planes"]
-        .as_array()
-        .expect("planes")
-        .iter()
-        .enumerate()
-    {
-        if i > 0 {
-            b.click("button.add-plane").await;
-        }
-        type_into(
-            b,
-            &field(&format!("planes[{i}].id")),
-            plane["id"].as_str().expect("id"),
-        )
-        .await;
-        if !plane["radius_mm"].is_null() {
-            type_into(
-                b,
-                &field(&format!("planes[{i}].radius_mm")),
-                &typed(&plane["radius_mm"]),
-            )
-            .await;
-        }
-        if !plane["positions"].is_null() {
-            type_into(
-                b,
-                &field(&format!("planes[{i}].positions")),
-                &typed(&plane["positions"]),
-            )
-            .await;
-        }
-    }
-    for (i, sensor) in session["sensors"]
-        .as_array()
-        .expect("sensors")
-        .iter()
-        .enumerate()
-    {
-        if i > 0 {
-            b.click("button.add-sensor").await;
-        }
-        type_into(
-            b,
-            &field(&format!("sensors[{i}].id")),
-            sensor["id"].as_str().expect("id"),
-        )
-        .await;
-        choose(
-            b,
-            &field(&format!("sensors[{i}].unit")),
-            sensor["unit"].as_str().expect("unit"),
-        )
-        .await;
-        if let Some(label) = sensor["label"].as_str() {
-            type_into(b, &field(&format!("sensors[{i}].label")), label).await;
-        }
-    }
-}
-
-/// The grid's cells for `run` in reading order: per speed, per sensor, amplitude then phase.
-pub fn cells(session: &Value, run: &Value) -> Vec<String> {
-    let mut out = Vec::new();
-    for speed in speeds(session) {
-        for sensor in session["sensors"].as_array().expect("sensors") {
-            let reading = run["readings"]
-                .as_array()
-                .expect("readings")
-                .iter()
-                .find(|r| {
-                    r["sensor"] == sensor["id"]
-                        && (r["speed_rpm"].as_f64().unwrap() - speed).abs() <= 0.01 * speed
-                })
-                .unwrap_or_else(|| {
-                    panic!(
-                        "run {} has no reading for {} at {speed}",
-                        run["id"], sensor["id"]
-                    )
-                });
-            out.push(typed(&reading["amplitude"]));
-            out.push(typed(&reading["phase_deg"]));
-        }
-    }
-    out
-}
-
-/// Click the first cell of run `k`, then type every value followed by Tab:
-/// this only fills the right cells if Tab walks the grid in reading order.
-pub async fn type_cells_with_tab(b: &Browser, k: usize, values: &[String]) {
-    b.click(&field(&format!("runs[{k}].readings[0].amplitude")))
-        .await;
-    for value in values {
-        let active = b.client.active_element().await.expect("a focused cell");
-        active
-            .send_keys(&format!("{value}{TAB}"))
-            .await
-            .expect("typing into the focused cell");
-    }
-    for (i, value) in values.iter().enumerate() {
-        let kind = if i % 2 == 0 { "amplitude" } else { "phase_deg" };
-        let css = field(&format!("runs[{k}].readings[{}].{kind}", i / 2));
-        assert_eq!(
-            &value_of(b, &css).await,
-            value,
-            "cell {css} after typing with Tab"
-        );
-    }
-}
-
-/// Type run `k` of `session` (run name, weights, readings) and store it.
-/// With `carry`, weights of the previous trial still on the rotor are given by the tick.
-pub async fn type_run(b: &Browser, session: &Value, k: usize, carry: bool) {
-    let runs = session["runs"].as_array().expect("runs");
-    let run = &runs[k];
-    let weights = run["weights"].as_array().expect("weights");
-    if k > 0 {
-        b.click("button.add-trial").await;
-        let previous = runs[..k]
-            .iter()
-            .rev()
-            .find(|r| !r["weights"].as_array().unwrap().is_empty());
-        let mut own: &[Value] = weights;
-        if let Some(prev) = previous.filter(|_| carry) {
-            let kept = prev["weights"].as_array().unwrap();
-            if weights.len() >= kept.len() && &weights[..kept.len()] == kept.as_slice() {
-                b.click("input.carry-tick").await;
-                own = &weights[kept.len()..];
-            }
-        }
-        // The new run starts with one weight row.
-        if own.is_empty() {
-            b.click(".weights button.small").await;
-        }
-        for _ in 1..own.len() {
-            b.click("button.add-weight").await;
-        }
-        for (j, w) in own.iter().enumerate() {
-            let path = format!("runs[{k}].weights[{j}]");
-            choose(
-                b,
-                &field(&format!("{path}.plane")),
-                w["plane"].as_str().unwrap(),
-            )
-            .await;
-            type_into(b, &field(&format!("{path}.mass_g")), &typed(&w["mass_g"])).await;
-            type_into(
-                b,
-                &field(&format!("{path}.angle_deg")),
-                &typed(&w["angle_deg"]),
-            )
-            .await;
-        }
-    }
-    type_into(
-        b,
-        &field(&format!("runs[{k}].id")),
-        run["id"].as_str().expect("run id"),
-    )
-    .await;
-    type_cells_with_tab(b, k, &cells(session, run)).await;
-    store(b).await;
-}
-
-/// Press the store button and wait until the run is stored (or fail with the page's message).
-pub async fn store(b: &Browser) {
-    b.click("#step-runs button.store").await;
+/// Solve on the corrections step and compare.
+async fn solve_and_compare_here(b: &Browser, expected: &Value) {
+    b.click("#step-solve button.solve").await;
     b.wait_until(
-        "the run is stored or refused",
-        "return !!document.querySelector('#step-runs button.add-trial') || \
-         !!document.querySelector('#step-runs .banner.error:not([hidden])')",
+        "the solve answers",
+        "return !!document.querySelector('#step-solve table.corrections') && !document.querySelector('#step-solve .trim')",
     )
     .await;
-    if let Ok(banner) = b
-        .client
-        .find(Locator::Css("#step-runs .banner.error:not([hidden])"))
-        .await
-    {
-        panic!(
-            "the form refused the run: {}",
-            banner.text().await.unwrap_or_default()
+    let shown = form::corrections_on_page(b).await;
+    let expected = expected["corrections"]
+        .as_array()
+        .expect("expected corrections");
+    assert_eq!(shown.len(), expected.len(), "corrections shown: {shown:?}");
+    for (want, (plane, mass, angle)) in expected.iter().zip(&shown) {
+        assert_eq!(want["plane"].as_str(), Some(plane.as_str()));
+        // The page rounds to 0.1 g and 0.1°.
+        let want_mass = want["mass_g"].as_f64().unwrap();
+        assert!(
+            (mass - want_mass).abs() <= 0.051,
+            "{plane}: {mass} g shown, {want_mass} g expected"
+        );
+        let want_angle = want["angle_deg"].as_f64().unwrap();
+        let diff = (angle - want_angle).rem_euclid(360.0);
+        assert!(
+            diff.min(360.0 - diff) <= 0.051,
+            "{plane}: {angle}° shown, {want_angle}° expected"
         );
     }
 }
 
-/// The corrections as the page shows them: (plane, mass in g, angle in degrees).
-pub async fn corrections_on_page(b: &Browser) -> Vec<(String, f64, f64)> {
-    b.wait_for("#step-solve table.corrections tbody tr").await;
-    let mut out = Vec::new();
-    for row in b
-        .client
-        .find_all(Locator::Css("#step-solve table.corrections tbody tr"))
+/// The page's "mass ± g, angle ± °" and 95 % bounds, against the service's own solve of the session.
+async fn uncertainty_as_the_service_gives_it(b: &Browser, stand: &Stand, session: &Value) {
+    let solution = post(stand, "/api/v1/solve", json!({ "session": session })).await;
+    let c = &solution["corrections"][0];
+    let u = &c["uncertainty"];
+    let (m, a) = (
+        c["mass_g"].as_f64().unwrap(),
+        c["angle_deg"].as_f64().unwrap(),
+    );
+    let dm = (u["mass_g"][1].as_f64().unwrap() - m).max(m - u["mass_g"][0].as_f64().unwrap());
+    let arc = |x: f64, y: f64| {
+        let d = (x - y).rem_euclid(360.0);
+        d.min(360.0 - d)
+    };
+    let da = arc(u["angle_deg"][1].as_f64().unwrap(), a)
+        .max(arc(a, u["angle_deg"][0].as_f64().unwrap()));
+    // One decimal is the page's rounding for values from 1 to 100.
+    assert!(
+        (1.0..100.0).contains(&dm) && (1.0..100.0).contains(&da),
+        "{u}"
+    );
+    let want = format!(
+        "{m:.1} g ± {dm:.1} g, {:.1}° ± {da:.1}°",
+        a.rem_euclid(360.0)
+    );
+    let shown = b
+        .text("#step-solve tr[data-plane=\"inboard\"] .corr-uncertainty")
+        .await;
+    assert_eq!(shown, want);
+    let bound = solution["predicted_residual"][0]["amplitude_95"]
+        .as_f64()
+        .unwrap();
+    assert_eq!(
+        b.text("#step-solve table.residual td.after95").await,
+        format!("≤ {bound:.1}")
+    );
+}
+
+/// One browser for every scene of this binary (CI time); each scene gets a
+/// new server and database and a freshly loaded form (`Stand::renew`).
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_job_typed_into_the_form_is_solved_stored_reopened_and_shown_safely() {
+    let mut stand = Stand::start().await;
+    typing_the_two_plane_pump_example_key_by_key_gives_its_corrections(&stand).await;
+    stand.renew().await;
+    a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick(&stand).await;
+    stand.renew().await;
+    a_stored_session_reopens_after_a_reload(&stand).await;
+    stand.renew().await;
+    a_session_named_like_html_is_shown_as_text_and_runs_nothing(&stand).await;
+    stand.renew().await;
+    crate::scenes::noise::the_noise_pull_is_shown_beside_the_fitted_weight_only_when_the_noise_is_stated(
+        &stand,
+    )
+    .await;
+    stand.stop().await;
+}
+
+async fn typing_the_two_plane_pump_example_key_by_key_gives_its_corrections(stand: &Stand) {
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.viewport(1280, 800).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
         .await
-        .expect("rows")
-    {
-        let text = |css: &'static str| {
-            let row = row.clone();
-            async move {
-                row.find(Locator::Css(css))
-                    .await
-                    .expect(css)
-                    .text()
-                    .await
-                    .expect("text")
-            }
-        };
-        let plane = text(".corr-plane").await;
-        let mass = text(".corr-mass").await;
-        let angle = text(".corr-angle").await;
-        let number = |s: &str| -> f64 {
-            s.trim_end_matches(|c: char| !c.is_ascii_digit())
-                .parse()
-                .unwrap_or_else(|_| panic!("not a number on the page: {s:?}"))
-        };
-        out.push((plane, number(&mass), number(&angle)));
+        .expect("scrolls");
+    b.screenshot("setup-1280").await;
+    b.client
+        .execute(
+            "document.querySelector('fieldset.planes').scrollIntoView()",
+            vec![],
+        )
+        .await
+        .expect("scrolls");
+    crate::harness::job::shots(b, "setup-planes").await;
+    b.viewport(768, 1024).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("setup-768").await;
+    b.viewport(1280, 800).await;
+    b.click("#step-setup button.next").await;
+    for k in 0..session["runs"].as_array().unwrap().len() {
+        type_run(b, &session, k, false).await;
     }
-    out
+    b.screenshot("runs-1280").await;
+    b.viewport(768, 1024).await;
+    b.screenshot("runs-768").await;
+    b.viewport(1280, 800).await;
+    solve_and_compare(b, &expected).await;
+    uncertainty_as_the_service_gives_it(b, stand, &session).await;
+    b.screenshot("solution-1280").await;
+    b.client
+        .execute("document.querySelector('.plots').scrollIntoView()", vec![])
+        .await
+        .expect("scrolls");
+    crate::harness::job::shots(b, "solution-plots").await;
+    b.viewport(768, 1024).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    b.screenshot("solution-768").await;
+    b.client
+        .find(Locator::Css("nav [data-step=\"report\"]"))
+        .await
+        .unwrap()
+        .click()
+        .await
+        .unwrap();
+    let title = b.text(".report-title").await;
+    assert!(
+        title.contains("pump-two-plane-exact"),
+        "report title: {title}"
+    );
+    crate::harness::job::shots(b, "report").await;
+    // On paper only the report shows: no navigation, no print button.
+    b.emulate_print(true).await;
+    let shown = b
+        .client
+        .execute(
+            "return ['nav.steps', 'header.top', '#step-report .print', '#step-report article']\
+               .map((css) => document.querySelector(css).getClientRects().length > 0)",
+            vec![],
+        )
+        .await
+        .unwrap();
+    assert_eq!(shown, json!([false, false, false, true]));
+    b.viewport(1280, 800).await;
+    b.screenshot("report-print-1280").await;
+    b.emulate_print(false).await;
+
+    // The check run starts with the corrections as its weights; readings at the
+    // predicted residual (zero for exact data) leave the corrections unchanged.
+    b.viewport(1280, 800).await;
+    b.click("nav [data-step=\"solve\"]").await;
+    b.click("#step-solve button.check-run").await;
+    assert_eq!(value_of(b, &field("runs[3].weights[0].mass_g")).await, "30");
+    assert_eq!(
+        value_of(b, &field("runs[3].weights[0].angle_deg")).await,
+        "255"
+    );
+    assert_eq!(value_of(b, &field("runs[3].weights[1].mass_g")).await, "22");
+    assert_eq!(
+        value_of(b, &field("runs[3].weights[1].angle_deg")).await,
+        "120"
+    );
+    form::type_cells_with_tab(b, 3, &vec!["0".to_string(); 8]).await;
+    b.client
+        .execute("window.scrollTo(0, 0)", vec![])
+        .await
+        .expect("scrolls");
+    crate::harness::job::shots(b, "runs-check-entry").await;
+    form::store(b).await;
+    // After the check run the solve starts from it: nothing to add, and the
+    // one weight per plane that replaces what is on is the first answer.
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    for want in expected["corrections"].as_array().unwrap() {
+        let plane = want["plane"].as_str().unwrap();
+        let words = b.text(&format!(".trim li[data-plane=\"{plane}\"]")).await;
+        let total = format!(
+            "one weight of {:.1} g at {:.1}°",
+            want["mass_g"].as_f64().unwrap(),
+            want["angle_deg"].as_f64().unwrap().rem_euclid(360.0)
+        );
+        assert!(
+            words.contains("nothing to add") && words.contains(&total),
+            "{words}"
+        );
+    }
+    // Corrected from the zero run instead, the first answer again.
+    b.click("details.options summary").await;
+    form::choose(b, "#step-solve select.from-run", "").await;
+    solve_and_compare_here(b, &expected).await;
+}
+
+async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick(stand: &Stand) {
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-kept-trial-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    for k in 0..session["runs"].as_array().unwrap().len() {
+        type_run(b, &session, k, true).await;
+    }
+    // The stored run lists both weights although only the second was typed.
+    let stored = stand.server.url("/api/v1/sessions");
+    let list: Value = reqwest::get(&stored).await.unwrap().json().await.unwrap();
+    let id = list["sessions"][0]["id"]
+        .as_str()
+        .expect("a stored session")
+        .to_string();
+    let got: Value = reqwest::get(format!("{stored}/{id}"))
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    assert_eq!(got["runs"][2]["weights"], session["runs"][2]["weights"]);
+    solve_and_compare(b, &expected).await;
+}
+
+async fn a_stored_session_reopens_after_a_reload(stand: &Stand) {
+    let b = &stand.browser;
+    let (session, expected) = example_session("pump-two-plane-exact.json");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    type_run(b, &session, 0, false).await;
+    type_run(b, &session, 1, false).await;
+
+    // A reload keeps the session (its id is in the address).
+    b.client.refresh().await.expect("reloads");
+    b.wait_for("#step-runs td.value.amp").await;
+    let amps: Vec<String> = {
+        let mut out = Vec::new();
+        for el in b
+            .client
+            .find_all(Locator::Css("#step-runs td.value.amp"))
+            .await
+            .unwrap()
+        {
+            out.push(el.text().await.unwrap());
+        }
+        out
+    };
+    assert_eq!(amps.len(), 8, "two runs × four sensors: {amps:?}");
+    assert_eq!(amps[0], "465.4", "zero run, DE-H");
+    assert_eq!(amps[1], "1073", "trial inboard, DE-H");
+
+    // A fresh start at `/` lists it; opening it restores set-up and runs.
+    b.client.goto(&stand.server.url("/")).await.unwrap();
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("button.open-session").await;
+    crate::harness::job::shots(b, "sessions").await;
+    b.click("button.open-session").await;
+    b.wait_for("#step-runs td.value.amp").await;
+    assert_eq!(b.text("#job-title").await, "pump-two-plane-exact · stored");
+    b.click("nav [data-step=\"setup\"]").await;
+    assert_eq!(value_of(b, &field("planes[1].id")).await, "outboard");
+    assert_eq!(value_of(b, &field("planes[1].radius_mm")).await, "160");
+    assert_eq!(value_of(b, &field("sensors[3].id")).await, "NDE-V");
+    assert_eq!(value_of(b, &field("speeds")).await, "2950");
+    b.click("#step-setup button.next").await;
+    // The job goes on where it stopped.
+    type_run(b, &session, 2, false).await;
+    solve_and_compare(b, &expected).await;
+}
+
+async fn a_session_named_like_html_is_shown_as_text_and_runs_nothing(stand: &Stand) {
+    let b = &stand.browser;
+    let name = "<img src=x onerror=alert(1)>";
+    let (mut session, _) = example_session("pump-single-plane-noisy.json");
+    session["name"] = json!(name);
+    session["sensors"][0]["label"] = json!("<b>bold</b>");
+    type_setup(b, &session).await;
+    b.click("#step-setup button.next").await;
+    type_run(b, &session, 0, false).await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("button.open-session").await;
+    assert_eq!(b.text("button.open-session").await, name);
+    assert_eq!(b.text("#job-title").await, format!("{name} · stored"));
+    b.click("nav [data-step=\"report\"]").await;
+    assert_eq!(
+        b.text(".report-title").await,
+        format!("Balancing report — {name}")
+    );
+    // Had the name been parsed as HTML anywhere, there would be an <img> or a <b>.
+    let parsed = b
+        .client
+        .execute("return document.querySelectorAll('img, b').length", vec![])
+        .await
+        .unwrap();
+    assert_eq!(parsed, json!(0));
+    assert!(b.client.get_alert_text().await.is_err(), "an alert is open");
 }

@@ -4,11 +4,11 @@
 
 use serde_json::{json, Value};
 
-use super::form::choose;
-use super::job::{predicted, shots};
-use super::stand::{post, Stand};
-use super::steps::js;
-use super::Browser;
+use crate::harness::form::choose;
+use crate::harness::job::{predicted, shots};
+use crate::harness::stand::{post, Stand};
+use crate::harness::steps::js;
+use crate::harness::Browser;
 
 async fn polar_count(b: &Browser) -> Value {
     js(
@@ -21,7 +21,7 @@ async fn polar_count(b: &Browser) -> Value {
 /// (Item 3) The filter shows one sensor's plots, or every speed's, as chosen.
 pub async fn polar_filter_narrows_the_plots(b: &Browser, session: &Value) {
     let sensors = session["sensors"].as_array().unwrap();
-    let speeds = super::form::speeds(session);
+    let speeds = crate::harness::form::speeds(session);
     // Many plots: one speed at a time to begin with, every sensor.
     assert_eq!(polar_count(b).await, json!(sensors.len()));
     let first = sensors[0]["id"].as_str().unwrap();
@@ -114,6 +114,6 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
         );
         assert!(fig[0].as_u64().unwrap() >= 3, "three curves: {got}");
     }
-    super::job::scroll_to(b, ".bode-plots").await;
+    crate::harness::job::scroll_to(b, ".bode-plots").await;
     shots(b, "job-bode-check-run").await;
 }

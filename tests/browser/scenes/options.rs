@@ -6,10 +6,10 @@
 
 use serde_json::{json, Value};
 
-use super::form::{corrections_on_page, field, type_into};
-use super::job::shots;
-use super::steps::js;
-use super::Browser;
+use crate::harness::form::{corrections_on_page, field, type_into};
+use crate::harness::job::shots;
+use crate::harness::steps::js;
+use crate::harness::Browser;
 
 /// Keep the body of every request the page sends from now on (until it is reloaded).
 pub async fn record_requests(b: &Browser) {
@@ -95,7 +95,7 @@ pub async fn each_option_reaches_the_request_and_changes_the_answer(b: &Browser,
     b.click("#step-solve details.options summary").await;
 
     // What to minimise.
-    super::form::choose(b, "#step-solve select.objective", "min_max").await;
+    crate::harness::form::choose(b, "#step-solve select.objective", "min_max").await;
     solve_now(b).await;
     assert_eq!(last_solve_request(b).await["objective"], json!("min_max"));
     assert!(
@@ -103,8 +103,8 @@ pub async fn each_option_reaches_the_request_and_changes_the_answer(b: &Browser,
         "min-max gives other weights"
     );
     shots(b, "job-option-objective").await;
-    super::steps::fits_a_tablet(b, "options open").await;
-    super::form::choose(b, "#step-solve select.objective", "least_squares").await;
+    crate::harness::steps::fits_a_tablet(b, "options open").await;
+    crate::harness::form::choose(b, "#step-solve select.objective", "least_squares").await;
 
     // A mass limit below the heaviest correction.
     let (plane, heaviest, _) = base
@@ -150,7 +150,7 @@ pub async fn each_option_reaches_the_request_and_changes_the_answer(b: &Browser,
     );
     assert!(moved(&answer_shown(b).await.0, &base), "without {left}");
     tick(b, "sensors", left).await;
-    let speeds = super::form::speeds(session);
+    let speeds = crate::harness::form::speeds(session);
     tick(b, "speeds", &format!("{}", speeds[0])).await;
     solve_now(b).await;
     let sent = last_solve_request(b).await;

@@ -5,14 +5,6 @@
 
 pub mod form;
 pub mod job;
-pub mod kit;
-pub mod kit_fit;
-pub mod kit_support;
-pub mod machine;
-pub mod multispeed;
-pub mod noise;
-pub mod options;
-pub mod scenes;
 pub mod stand;
 pub mod steps;
 
@@ -35,7 +27,17 @@ pub struct Browser {
     pub client: Client,
     driver: Child,
     _profile: tempfile::TempDir,
+    /// This binary's turn to run a browser, given back when the browser is dropped.
+    _turn: tokio::sync::MutexGuard<'static, ()>,
 }
+
+/// One browser at a time in this test binary. The browser tests were one
+/// binary each, which cargo runs one after another; as modules of one binary
+/// they run on parallel threads, and two Chromiums at once would share CI's
+/// two cores. Each test keeps its own browser (a `#[tokio::test]` has its own
+/// runtime, and a WebDriver client lives on the runtime that made it), so the
+/// browsers take turns. A tokio mutex: it is not poisoned by a failed test.
+static TURN: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
 
 fn free_port() -> u16 {
     TcpListener::bind("127.0.0.1:0")
@@ -58,6 +60,7 @@ impl Browser {
     /// Start chromedriver and a fresh headless Chromium with a 1280×800 window.
     pub async fn start() -> Browser {
         require_binaries();
+        let turn = TURN.lock().await;
         let port = free_port();
         let profile = tempfile::tempdir().expect("temporary profile directory");
         let mut command = Command::new(CHROMEDRIVER);
@@ -120,6 +123,7 @@ impl Browser {
             client,
             driver: guard.0.take().expect("driver"),
             _profile: profile,
+            _turn: turn,
         }
     }
 

@@ -4,9 +4,9 @@
 
 use serde_json::Value;
 
-pub use super::stand::{get, post};
-use super::steps::js;
-use super::Browser;
+pub use crate::harness::stand::{get, post};
+use crate::harness::steps::js;
+use crate::harness::Browser;
 
 /// A number as the page writes it (num.js `fmt`): `digits` decimals, one more
 /// below 1, at most one from 100 and none from 1000.

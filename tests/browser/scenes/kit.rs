@@ -5,12 +5,12 @@
 
 use serde_json::{json, Value};
 
-use super::form::{self, field, type_into, typed, value_of};
-use super::job::shots;
 use super::kit_fit::kit_fit_is_drawn_where_it_goes;
 use super::kit_support::{csv_column_per_run, fmt, get, post, read_csv};
-use super::stand::Stand;
-use super::Browser;
+use crate::harness::form::{self, field, type_into, typed, value_of};
+use crate::harness::job::shots;
+use crate::harness::stand::Stand;
+use crate::harness::Browser;
 
 const ROTOR: [(&str, &str); 2] = [
     ("rotor.mass_kg", "400"),
@@ -88,9 +88,9 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
     type_into(b, &field("planes[0].kit.masses_g"), KITS[0]).await;
     type_into(b, &field("planes[1].places_deg"), OUTBOARD_PLACES).await;
     type_into(b, &field("planes[1].kit.masses_g"), KITS[1]).await;
-    super::job::scroll_to(b, "fieldset.planes").await;
+    crate::harness::job::scroll_to(b, "fieldset.planes").await;
     shots(b, "job-kit-setup").await;
-    super::steps::fits_a_tablet(b, "kit setup").await;
+    crate::harness::steps::fits_a_tablet(b, "kit setup").await;
     b.click("#step-setup button.next").await;
 
     // The shapes a CSV file may have are said at the grid, before any file is chosen.
@@ -119,7 +119,7 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
         );
     }
     form::store(b).await;
-    let id = super::steps::stored_id(b).await;
+    let id = crate::harness::steps::stored_id(b).await;
 
     // Before the first trial: the trial weight the service suggests from the rotor data.
     b.click("button.add-trial").await;
@@ -141,7 +141,7 @@ pub async fn new_job_with_rotor_places_and_kits(stand: &Stand, truth: &Value) {
         assert!(text.contains(&want), "{text:?} should say {want:?}");
     }
     shots(b, "job-trial-suggestion").await;
-    super::steps::fits_a_tablet(b, "trial suggestion").await;
+    crate::harness::steps::fits_a_tablet(b, "trial suggestion").await;
     use_it_enters_each_kit_weight(b, suggestions).await;
 
     // The trials: the fitter used the example's weights; the readings from the same file.
@@ -220,7 +220,7 @@ async fn use_it_enters_each_kit_weight(b: &Browser, suggestions: &[Value]) {
         ".suggestion li[data-plane=\"{plane}\"] button.use-suggestion"
     ))
     .await;
-    let entered = super::job::weights_in_editor(b, 1).await;
+    let entered = crate::harness::job::weights_in_editor(b, 1).await;
     let angle: f64 = format!(
         "{:.1}",
         stack["angle_deg"].as_f64().unwrap().rem_euclid(360.0)

@@ -4,11 +4,11 @@
 
 use serde_json::{json, Value};
 
-use super::job::shots;
 use super::kit::GRADE;
 use super::kit_support::{assert_same_angles, drawn_angles, fmt, get, post};
-use super::stand::Stand;
-use super::steps::js;
+use crate::harness::job::shots;
+use crate::harness::stand::Stand;
+use crate::harness::steps::js;
 
 /// (Items 2, 8) The kit fit drawn and said per plane, beside the service's own.
 pub async fn kit_fit_is_drawn_where_it_goes(stand: &Stand, id: &str) {
@@ -123,9 +123,9 @@ pub async fn kit_fit_is_drawn_where_it_goes(stand: &Stand, id: &str) {
         fmt(iso["permissible_per_plane_gmm"].as_f64().unwrap(), 0)
     );
     assert!(summary.contains(&want), "{summary:?} should say {want:?}");
-    super::job::scroll_to(b, ".plane-pics").await;
+    crate::harness::job::scroll_to(b, ".plane-pics").await;
     shots(b, "job-kit-fit").await;
-    super::steps::fits_a_tablet(b, "kit fit").await;
+    crate::harness::steps::fits_a_tablet(b, "kit fit").await;
     report_says_the_places_and_the_iso_verdict(stand, &service).await;
 }
 

@@ -2,11 +2,10 @@
 //! multi-speed job (the grid, the plots), a weak trial run (the warning in
 //! plain words, its answer greyed), and the uncertainty shown in technician words.
 
-mod browser;
-mod common;
+use crate::common;
 
-use browser::stand::Stand;
-use browser::{form, Browser};
+use crate::harness::stand::Stand;
+use crate::harness::{form, Browser};
 use fantoccini::Locator;
 use serde_json::{json, Value};
 
@@ -62,7 +61,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         .await
         .unwrap();
     assert_eq!(rows.len(), 8 * 5, "eight speeds × five sensors");
-    browser::job::shots(b, "runs-multispeed").await;
+    crate::harness::job::shots(b, "runs-multispeed").await;
     b.click("#step-runs button.go-solve").await;
     b.click("#step-solve button.solve").await;
     let shown = form::corrections_on_page(b).await;
@@ -98,7 +97,7 @@ async fn an_imported_multi_speed_job_shows_every_row_and_solves_to_the_expected_
         )
         .await
         .unwrap();
-    browser::job::shots(b, "solution-multispeed-plots").await;
+    crate::harness::job::shots(b, "solution-multispeed-plots").await;
 }
 
 /// Words that read as code: with an underscore, a dot between letters, or brackets.
@@ -201,9 +200,9 @@ async fn a_weak_trial_run_is_warned_about_with_what_to_do_and_its_answer_greyed(
         !words.contains('`') && code_like.is_empty(),
         "{code_like:?} in {words}"
     );
-    browser::job::shots(b, "solution-warning").await;
-    browser::job::scroll_to(b, "#step-solve .summary").await;
-    browser::job::shots(b, "solution-warning-summary").await;
+    crate::harness::job::shots(b, "solution-warning").await;
+    crate::harness::job::scroll_to(b, "#step-solve .summary").await;
+    crate::harness::job::shots(b, "solution-warning-summary").await;
     // The report's first page says the same: greyed, why, and what to do.
     b.click("nav [data-step=\"report\"]").await;
     let answer = b.text("#step-report .report-answer .doubts").await;

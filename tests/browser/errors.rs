@@ -2,11 +2,8 @@
 //! its cell as it is typed, before anything is sent, and an error from the
 //! server is shown at the field its `error.field` names.
 
-mod browser;
-mod common;
-
-use browser::form::{self, field, type_into, type_setup};
-use browser::stand::{example_session, Stand};
+use crate::harness::form::{self, field, type_into, type_setup};
+use crate::harness::stand::{example_session, Stand};
 use fantoccini::Locator;
 use serde_json::{json, Value};
 
@@ -68,7 +65,7 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field(s
         .await
         .unwrap();
     assert_eq!(b.text(&msg).await, "not a number");
-    browser::job::shots(b, "runs-bad-cell").await;
+    crate::harness::job::shots(b, "runs-bad-cell").await;
     type_into(b, &cell, "330.36690382308").await;
 
     // Store the zero run, then let another client take the next run's name.

@@ -1,11 +1,10 @@
 //! End-to-end test of the form's exports: the session typed into the form
 //! comes back as exactly the example's JSON, and the readings and results as CSV.
 
-mod browser;
-mod common;
+use crate::common;
 
-use browser::form::{self, type_run, type_setup};
-use browser::Browser;
+use crate::harness::form::{self, type_run, type_setup};
+use crate::harness::Browser;
 use serde_json::Value;
 
 /// Where two JSON values differ, numbers compared as f64 (`30` and `30.0` are the same number).

@@ -3,10 +3,9 @@
 //! not ask again), shows a read token's 403 without asking, and asks again
 //! when the kept token is no longer accepted.
 
-mod browser;
-mod common;
+use crate::common;
 
-use browser::Browser;
+use crate::harness::Browser;
 use fieldbal::http::edge::access::Tokens;
 use fieldbal::http::edge::EdgeConfig;
 use serde_json::Value;
@@ -48,7 +47,7 @@ async fn answer_prompt(b: &Browser, token: &str) {
 /// Delete the listed session, accepting the form's confirmation.
 async fn delete_listed(b: &Browser) {
     b.click("button.delete").await;
-    for _ in 0..browser::WAIT_POLLS {
+    for _ in 0..crate::harness::WAIT_POLLS {
         if b.client.accept_alert().await.is_ok() {
             return;
         }

@@ -5,10 +5,10 @@
 
 use serde_json::{json, Value};
 
-use super::form::{field, type_into};
 use super::options::solve_now;
-use super::stand::{post, Stand};
-use super::steps::js;
+use crate::harness::form::{field, type_into};
+use crate::harness::stand::{post, Stand};
+use crate::harness::steps::js;
 
 /// The stated noise of the example's description: 2 % and 2°.
 fn noise() -> Value {
@@ -16,7 +16,7 @@ fn noise() -> Value {
 }
 
 /// Per row of the corrections table: its plane, and the `corr-unbiased` line's text and title (if any).
-async fn unbiased_lines(b: &super::Browser) -> Vec<(String, Option<(String, String)>)> {
+async fn unbiased_lines(b: &crate::harness::Browser) -> Vec<(String, Option<(String, String)>)> {
     let got = js(
         b,
         "return [...document.querySelectorAll('#step-solve table.corrections tbody tr')].map((tr) => { \
@@ -127,12 +127,12 @@ pub async fn the_noise_pull_is_shown_beside_the_fitted_weight_only_when_the_nois
         .text("#step-solve table.corrections tbody tr td.corr-uncertainty")
         .await;
     assert!(first.contains(" g ± "), "{first}");
-    let on_page = super::form::corrections_on_page(b).await;
+    let on_page = crate::harness::form::corrections_on_page(b).await;
     for (c, (_, mass, _)) in want.iter().zip(&on_page) {
         assert!((mass - c["mass_g"].as_f64().unwrap()).abs() <= 0.051, "{c}");
     }
-    super::job::scroll_to(b, "#step-solve table.corrections").await;
-    super::job::shots(b, "solution-noise-pull").await;
+    crate::harness::job::scroll_to(b, "#step-solve table.corrections").await;
+    crate::harness::job::shots(b, "solution-noise-pull").await;
 
     // The results CSV carries each estimate as a row of its own, in the same columns.
     let csv = b

@@ -1,4 +1,4 @@
-//! Steps of the whole-job browser test (tests/browser_job.rs) that read as
+//! Steps of the whole-job browser test (tests/browser/job.rs) that read as
 //! one sentence each: the typed-mistake rules, storing a typed run, solving,
 //! the service's own trim to compare with, and the tablet-width checks.
 

@@ -2,13 +2,21 @@
 //! trim from stored coefficients (its zero run read from CSV), a multi-speed
 //! job's Bode plots and identification, and the page's weight.
 
+pub mod kit;
+pub mod kit_fit;
+pub mod kit_support;
+pub mod machine;
+pub mod multispeed;
+pub mod noise;
+pub mod options;
+
 use fantoccini::Locator;
 use serde_json::{json, Value};
 
-use super::form::{self, field, type_into, value_of};
-use super::job::{scroll_to, shots};
-use super::stand::{example_session, Stand};
-use super::steps::{fits_a_tablet, js};
+use crate::harness::form::{self, field, type_into, value_of};
+use crate::harness::job::{scroll_to, shots};
+use crate::harness::stand::{example_session, Stand};
+use crate::harness::steps::{fits_a_tablet, js};
 
 /// (b, i) The machine page, coefficients pooled, a trim job with only a zero run read from CSV.
 pub async fn machine_page_and_trim_from_stored_coefficients(stand: &Stand, truth: &Value) {
@@ -139,12 +147,12 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     b.wait_for("#step-solve .identification td.critical").await;
     // The polar plots per speed are filtered to one speed at a time.
     assert_eq!(counts[2], json!(sensors));
-    super::multispeed::polar_filter_narrows_the_plots(b, session).await;
+    self::multispeed::polar_filter_narrows_the_plots(b, session).await;
     scroll_to(b, ".bode-plots").await;
     shots(b, "job-bode").await;
     fits_a_tablet(b, "multi-speed corrections").await;
-    super::options::each_option_reaches_the_request_and_changes_the_answer(b, session).await;
-    super::multispeed::a_check_run_is_drawn_on_each_bode_plot(stand, id, session).await;
+    self::options::each_option_reaches_the_request_and_changes_the_answer(b, session).await;
+    self::multispeed::a_check_run_is_drawn_on_each_bode_plot(stand, id, session).await;
 }
 
 /// The page weighs under 250 kB and asks nothing of any other host, measured

@@ -3,10 +3,10 @@
 
 use serde_json::json;
 
-use super::job::shots;
 use super::kit_support::{fmt, get};
-use super::stand::Stand;
-use super::steps::js;
+use crate::harness::job::shots;
+use crate::harness::stand::Stand;
+use crate::harness::steps::js;
 
 /// The machine's jobs, each with its vibration before and after, and the trend of both.
 pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &Stand) {
@@ -48,14 +48,17 @@ pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &S
         "before and after, a point per job"
     );
     trend_is_labelled_with_the_jobs_dates(b, jobs).await;
-    super::job::scroll_to(b, "h3").await;
+    crate::harness::job::scroll_to(b, "h3").await;
     shots(b, "job-machine-jobs").await;
-    super::steps::fits_a_tablet(b, "machine jobs").await;
+    crate::harness::steps::fits_a_tablet(b, "machine jobs").await;
 }
 
 /// Under each point of the trend, the date its job was stored (the time too
 /// when jobs share a day), every label inside the plot and none over another.
-async fn trend_is_labelled_with_the_jobs_dates(b: &super::Browser, jobs: &[serde_json::Value]) {
+async fn trend_is_labelled_with_the_jobs_dates(
+    b: &crate::harness::Browser,
+    jobs: &[serde_json::Value],
+) {
     let mut stamps: Vec<&str> = jobs
         .iter()
         .map(|j| j["created_at"].as_str().unwrap())

@@ -1,0 +1,18 @@
+//! End-to-end tests of the web form in Debian's headless Chromium, typed key
+//! by key: errors at their field, exports, the form, imported sessions, a
+//! whole job at the stand, and bearer tokens. `harness/` starts and drives the
+//! browser (one at a time in this binary, see `harness::Browser::start`);
+//! `scenes/` holds the longer scenes the tests go through. Screenshots go to
+//! `target/screenshots/`.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod harness;
+mod scenes;
+
+mod errors;
+mod export;
+mod form;
+mod import;
+mod job;
+mod token;

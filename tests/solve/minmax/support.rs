@@ -1,4 +1,4 @@
-//! Helpers of tests/minmax_sessions.rs: the public examples, synthesised
+//! Helpers of sessions.rs: the public examples, synthesised
 //! rotors, and options built from JSON.
 
 use fieldbal::balancing::model::{Session, SolveOptions};

@@ -7,6 +7,7 @@ use fieldbal::balancing::model::Objective;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use proptest::prelude::*;
+use proptest::test_runner::FileFailurePersistence;
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 /// The least-squares correction by SVD, independent of the cone solver.
@@ -78,7 +79,14 @@ fn problem_strategy() -> impl Strategy<Value = (u64, usize, usize, f64, f64)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig {
+        // Seeds in a file beside this one (the default would look for them
+        // beside the binary's main.rs, in tests/proptest-regressions/).
+        failure_persistence: Some(Box::new(FileFailurePersistence::WithSource(
+            "proptest-regressions"
+        ))),
+        ..ProptestConfig::with_cases(48)
+    })]
 
     #[test]
     fn no_random_perturbation_beats_the_min_max_answer((seed, rows, planes, sa, sb) in problem_strategy()) {

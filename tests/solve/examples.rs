@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-mod common;
+use crate::common;
 
 use common::assert_matches_expected;
 use fieldbal::balancing::{self, Solution};

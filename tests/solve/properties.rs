@@ -10,6 +10,7 @@ use fieldbal::balancing::{solve, Solution};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use proptest::prelude::*;
+use proptest::test_runner::FileFailurePersistence;
 
 /// A random rotor in the internal frame: influence matrix, as-found unbalance
 /// (the correction is its negative), trial weights, and row layout.
@@ -148,7 +149,14 @@ fn close(a: Complex64, b: Complex64, rel: f64) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig {
+        // Seeds in a file beside this one (the default would look for them
+        // beside the binary's main.rs, in tests/proptest-regressions/).
+        failure_persistence: Some(Box::new(FileFailurePersistence::WithSource(
+            "proptest-regressions"
+        ))),
+        ..ProptestConfig::with_cases(64)
+    })]
 
     #[test]
     fn noise_free_readings_give_back_the_exact_correction(r in rotor(true), k in 0usize..4) {

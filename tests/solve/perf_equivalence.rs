@@ -23,7 +23,7 @@ const LS_TOL: f64 = 1e-9;
 /// max |b|, compared to 10⁻⁷ of itself or of 1 µm where the fit is exact);
 /// where fewer than `2n + 1` rows are active the objective is flat to second
 /// order, so the correction is known to about √10⁻⁸ = 10⁻⁴ of its
-/// size (as in tests/minmax_equivalence.rs).
+/// size (as in minmax/equivalence.rs).
 const MINMAX_VALUE_TOL: f64 = 1e-7;
 const MINMAX_TOL: f64 = 1e-4;
 

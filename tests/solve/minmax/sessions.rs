@@ -1,13 +1,13 @@
 //! Min-max, mass limits and row weights through the public `balancing::solve`
 //! (issue 5): on the public examples and on synthesised rotors.
 
-mod minmax_support;
+use super::support;
 
 use fieldbal::balancing::model::{Objective, SolveOptions};
 use fieldbal::balancing::{self, ErrorKind, Solution};
-use minmax_support::{example, mass, rotor, sensor_residuals, solve, with, BALANCING_EXAMPLES};
 use num_complex::Complex64;
 use serde_json::{json, Value};
+use support::{example, mass, rotor, sensor_residuals, solve, with, BALANCING_EXAMPLES};
 
 #[test]
 fn min_max_never_leaves_a_larger_maximum_than_least_squares_on_the_public_examples() {

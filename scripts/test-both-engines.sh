@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Run by scripts/test.sh inside a PostgreSQL cluster (FIELDBAL_TEST_POSTGRES_URL):
-# every test (SQLite, and the replica tests on PostgreSQL), then the suites
+# every test (SQLite, and the replica tests on PostgreSQL), then the tests
 # that go through HTTP once more with each test server on a PostgreSQL
 # database of its own (FIELDBAL_TEST_ENGINE=postgres, tests/common/engine.rs).
 set -euo pipefail
@@ -8,9 +8,26 @@ cd "$(dirname "$0")/.."
 : "${FIELDBAL_TEST_POSTGRES_URL:?run through scripts/test.sh or scripts/with-postgres.sh}"
 cargo test --locked --all-targets "$@"
 # Compiled above; this only runs them again. Browser tests stay on SQLite.
-http_suites=()
-for f in tests/api_*.rs tests/job_*.rs tests/hardening_writes.rs tests/edge_access.rs \
-         tests/fit_http.rs tests/identification_api.rs tests/residual_unbalance_api.rs; do
-  [ -e "$f" ] && http_suites+=(--test "$(basename "$f" .rs)")
+# Arguments before `--` go to cargo, those after it to the test binaries.
+cargo_args=()
+test_args=()
+seen=0
+for a in "$@"; do
+  if [ "$seen" = 0 ] && [ "$a" = -- ]; then
+    seen=1
+  elif [ "$seen" = 0 ]; then
+    cargo_args+=("$a")
+  else
+    test_args+=("$a")
+  fi
 done
-FIELDBAL_TEST_ENGINE=postgres cargo test --locked "${http_suites[@]}" "$@"
+on_postgres() {
+  FIELDBAL_TEST_ENGINE=postgres cargo test --locked "$@"
+}
+# Binaries whose every module goes through HTTP: whole.
+on_postgres --test api --test job "${cargo_args[@]}" -- "${test_args[@]}"
+# Elsewhere the modules that go through HTTP, by name (module paths).
+on_postgres --test hardening "${cargo_args[@]}" -- writes:: "${test_args[@]}"
+on_postgres --test edge "${cargo_args[@]}" -- access:: "${test_args[@]}"
+on_postgres --test fit "${cargo_args[@]}" -- http:: "${test_args[@]}"
+on_postgres --test identification --test residual "${cargo_args[@]}" -- api:: "${test_args[@]}"

@@ -5,7 +5,7 @@
 # starts it on a free loopback port with its socket in that directory,
 # exports FIELDBAL_TEST_POSTGRES_URL, runs "$@", and stops and removes the
 # cluster on exit, whatever happens.
-#   scripts/with-postgres.sh cargo test --test replicas_postgres
+#   scripts/with-postgres.sh cargo test --test hardening replicas_postgres::
 # FIELDBAL_PG_DURABLE=1 keeps fsync on (benchmarks); tests run without it.
 set -euo pipefail
 

@@ -1,0 +1,19 @@
+//! The HTTP API against the real server: bad requests and their error bodies,
+//! machines and their coefficient versions, the OpenAPI document, runs of a
+//! stored session, the `fieldbal serve` binary, service behaviour (request ids,
+//! body limits, time limits) and sessions. `scripts/test.sh` runs this whole
+//! binary a second time with the server on PostgreSQL.
+
+#[path = "../common/mod.rs"]
+mod common;
+/// The job tests' rotor model (machines solve new jobs from it).
+#[path = "../job/support.rs"]
+mod job_support;
+
+mod errors;
+mod machines;
+mod openapi;
+mod runs;
+mod serve;
+mod service;
+mod sessions;

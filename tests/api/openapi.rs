@@ -1,0 +1,85 @@
+//! The OpenAPI document served at /api/v1/openapi.json lists every endpoint of
+//! the contract, with the contract's error body.
+
+use crate::common;
+
+use common::{fresh_server, send};
+
+#[tokio::test]
+async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
+    let (_dir, server, client) = fresh_server().await;
+    let (status, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    assert_eq!(status, 200);
+    assert!(doc["openapi"].as_str().unwrap().starts_with("3."));
+
+    let expected = [
+        ("/healthz", "get"),
+        ("/api/v1/openapi.json", "get"),
+        ("/api/v1/solve", "post"),
+        ("/api/v1/trial-weights", "post"),
+        ("/api/v1/sessions", "post"),
+        ("/api/v1/sessions", "get"),
+        ("/api/v1/sessions/{id}", "get"),
+        ("/api/v1/sessions/{id}", "delete"),
+        ("/api/v1/sessions/{id}/runs", "post"),
+        ("/api/v1/sessions/{id}/runs/{run_id}", "get"),
+        ("/api/v1/sessions/{id}/runs/{run_id}", "put"),
+        ("/api/v1/sessions/{id}/runs/{run_id}/versions", "get"),
+        ("/api/v1/sessions/{id}/solutions", "post"),
+        ("/api/v1/sessions/{id}/solutions", "get"),
+        ("/api/v1/residual-unbalance", "post"),
+        ("/api/v1/machines", "post"),
+        ("/api/v1/machines", "get"),
+        ("/api/v1/machines/{id}", "get"),
+        ("/api/v1/machines/{id}", "delete"),
+        ("/api/v1/machines/{id}/coefficients", "post"),
+        ("/api/v1/machines/{id}/coefficients", "get"),
+        ("/api/v1/identify/rotor", "post"),
+        ("/api/v1/identify/free-decay", "post"),
+        ("/api/v1/identify/model", "post"),
+    ];
+    let mut listed: Vec<(String, String)> = doc["paths"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .flat_map(|(path, item)| {
+            item.as_object()
+                .unwrap()
+                .keys()
+                .filter(|k| ["get", "post", "put", "delete", "patch"].contains(&k.as_str()))
+                .map(move |m| (path.clone(), m.clone()))
+        })
+        .collect();
+    listed.sort();
+    let mut want: Vec<(String, String)> = expected
+        .iter()
+        .map(|(p, m)| (p.to_string(), m.to_string()))
+        .collect();
+    want.sort();
+    assert_eq!(listed, want);
+
+    let schemas = doc["components"]["schemas"].as_object().unwrap();
+    for name in [
+        "Session",
+        "Run",
+        "SolveRequest",
+        "SolveOptions",
+        "Solution",
+        "ErrorBody",
+        "StoredSolution",
+        "SessionList",
+    ] {
+        assert!(schemas.contains_key(name), "schema {name} missing");
+    }
+    let detail = &schemas["ErrorDetail"]["properties"];
+    for field in ["code", "message", "field"] {
+        assert!(detail.get(field).is_some(), "error detail lacks {field}");
+    }
+    // Every 4xx response of the session post names the error body.
+    let responses = &doc["paths"]["/api/v1/sessions"]["post"]["responses"];
+    for status in ["400", "413", "415", "422"] {
+        let schema = &responses[status]["content"]["application/json"]["schema"]["$ref"];
+        assert_eq!(schema, "#/components/schemas/ErrorBody", "{status}");
+    }
+    server.shutdown().await;
+}

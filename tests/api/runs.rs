@@ -1,0 +1,139 @@
+//! Runs of a stored session: a corrected run keeps its earlier versions and the
+//! session and its solutions use the newest; deleting a session removes everything.
+
+use crate::common;
+
+use common::{example, fresh_server, post, send};
+use serde_json::{json, Value};
+
+#[tokio::test]
+async fn a_corrected_run_keeps_its_earlier_version_and_the_solution_uses_the_new_one() {
+    let (_dir, server, client) = fresh_server().await;
+    let ex = example("pump-two-plane-exact.json");
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
+    let base = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());
+    let solve = || async {
+        let (status, _, s) = post(
+            &client,
+            &server.url(&format!("{base}/solutions")),
+            &json!({}),
+        )
+        .await;
+        assert_eq!(status, 201, "{s}");
+        s["solution"].clone()
+    };
+    let original = ex["session"]["runs"][1].clone();
+    let run_url = format!("{base}/runs/trial%20inboard");
+    let before = solve().await;
+
+    // A typo: one amplitude entered 10 times too large.
+    let mut typo = original.clone();
+    typo["readings"][0]["amplitude"] =
+        json!(original["readings"][0]["amplitude"].as_f64().unwrap() * 10.0);
+    let (status, _, body) = send(client.put(server.url(&run_url)).json(&typo)).await;
+    assert_eq!(
+        (status, body),
+        (200, json!({"run_id": "trial inboard", "version": 2}))
+    );
+    let (_, _, session) = send(client.get(server.url(&base))).await;
+    assert_eq!(session["runs"][1], typo_as_stored(&typo));
+    let with_typo = solve().await;
+    assert_ne!(with_typo["corrections"], before["corrections"]);
+
+    // Corrected back: version 3, the same answer as before, every version listed.
+    let (status, _, body) = send(client.put(server.url(&run_url)).json(&original)).await;
+    assert_eq!((status, &body["version"]), (200, &json!(3)));
+    assert_eq!(solve().await, before);
+    let (status, _, versions) = send(client.get(server.url(&format!("{run_url}/versions")))).await;
+    assert_eq!(status, 200);
+    let versions = versions.as_array().unwrap();
+    assert_eq!(
+        versions
+            .iter()
+            .map(|v| v["version"].clone())
+            .collect::<Vec<_>>(),
+        [json!(1), json!(2), json!(3)]
+    );
+    assert_eq!(
+        versions
+            .iter()
+            .map(|v| v["current"].clone())
+            .collect::<Vec<_>>(),
+        [json!(false), json!(false), json!(true)]
+    );
+    assert_eq!(versions[1]["run"], typo_as_stored(&typo));
+    assert_eq!(versions[0]["run"], versions[2]["run"]);
+
+    // Each stored solution says which run versions it used.
+    let (_, _, solutions) = send(client.get(server.url(&format!("{base}/solutions")))).await;
+    let used: Vec<Value> = solutions
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["runs"][1]["version"].clone())
+        .collect();
+    assert_eq!(used, [json!(1), json!(2), json!(3)]);
+    server.shutdown().await;
+}
+
+/// Numbers read back as floats (`30` → `30.0`); compare in that form.
+fn typo_as_stored(run: &Value) -> Value {
+    let run: fieldbal::balancing::model::Run = serde_json::from_value(run.clone()).unwrap();
+    serde_json::to_value(run).unwrap()
+}
+
+#[tokio::test]
+async fn run_ids_with_spaces_and_slashes_are_reachable_at_their_location() {
+    let (_dir, server, client) = fresh_server().await;
+    let mut session = example("pump-two-plane-exact.json")["session"].clone();
+    let mut trial = session["runs"].as_array_mut().unwrap().pop().unwrap();
+    trial["id"] = json!("trial B / 40 g");
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
+    let url = server.url(&format!(
+        "/api/v1/sessions/{}/runs",
+        created["id"].as_str().unwrap()
+    ));
+    let (status, headers, _) = post(&client, &url, &trial).await;
+    assert_eq!(status, 201);
+    let location = headers["location"].to_str().unwrap().to_string();
+    assert!(
+        location.ends_with("/runs/trial%20B%20%2F%2040%20g"),
+        "{location}"
+    );
+    let (status, _, versions) = send(client.get(server.url(&format!("{location}/versions")))).await;
+    assert_eq!(status, 200, "{versions}");
+    assert_eq!(versions[0]["run"]["id"], "trial B / 40 g");
+}
+
+#[tokio::test]
+async fn deleting_a_session_removes_it_with_its_runs_and_solutions() {
+    let (_dir, server, client) = fresh_server().await;
+    let ex = example("pump-two-plane-exact.json");
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
+    let base = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());
+    let (status, _, _) = post(
+        &client,
+        &server.url(&format!("{base}/solutions")),
+        &json!({}),
+    )
+    .await;
+    assert_eq!(status, 201);
+
+    let (status, _, body) = send(client.delete(server.url(&base))).await;
+    assert_eq!((status, body), (204, Value::Null));
+    for path in [
+        base.clone(),
+        format!("{base}/solutions"),
+        format!("{base}/runs/zero/versions"),
+    ] {
+        let (status, _, body) = send(client.get(server.url(&path))).await;
+        assert_eq!(
+            (status, body["error"]["code"].as_str()),
+            (404, Some("not_found")),
+            "{path}"
+        );
+    }
+    let (_, _, list) = send(client.get(server.url("/api/v1/sessions"))).await;
+    assert_eq!(list["total"], 0);
+    server.shutdown().await;
+}

@@ -1,0 +1,45 @@
+//! The `fieldbal serve` binary: creates `fieldbal.db` in its working directory,
+//! honours FIELDBAL_LISTEN, answers /healthz, stops with exit 0 on SIGTERM, and
+//! the data are there when it starts again.
+
+use crate::common;
+
+use std::process::Child;
+
+use common::{example, post, send};
+
+/// Start the binary in `dir` and return it with the address it logged.
+fn start(dir: &std::path::Path, args: &[&str], env: &[(&str, &str)]) -> (Child, String) {
+    common::binary::start(Some(dir), args, env)
+}
+
+/// SIGTERM, then wait (bounded) for the exit status.
+fn terminate(child: Child) -> std::process::ExitStatus {
+    common::binary::terminate(child, 10)
+}
+
+#[tokio::test]
+async fn serve_keeps_its_data_in_the_working_directory_and_stops_cleanly_on_sigterm() {
+    let dir = tempfile::tempdir().unwrap();
+    let client = reqwest::Client::new();
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+
+    let (child, addr) = start(dir.path(), &["--listen", "127.0.0.1:0"], &[]);
+    let (status, _, _) = send(client.get(format!("http://{addr}/healthz"))).await;
+    assert_eq!(status, 200);
+    let (status, _, created) =
+        post(&client, &format!("http://{addr}/api/v1/sessions"), &session).await;
+    assert_eq!(status, 201);
+    assert!(terminate(child).success());
+    assert!(dir.path().join("fieldbal.db").exists());
+
+    let (child, addr) = start(dir.path(), &[], &[("FIELDBAL_LISTEN", "127.0.0.1:0")]);
+    let url = format!(
+        "http://{addr}/api/v1/sessions/{}",
+        created["id"].as_str().unwrap()
+    );
+    let (status, _, back) = send(client.get(url)).await;
+    assert_eq!(status, 200);
+    assert_eq!(back["name"], session["name"]);
+    assert!(terminate(child).success());
+}

@@ -1,0 +1,125 @@
+//! Storage faults: a full disk gives a clean 507 JSON error and `/healthz`
+//! 503, and writes recover by themselves once space is freed; a read-only
+//! database keeps the service from starting, with a message that says so.
+//!
+//! The full disk is simulated with SQLite's `PRAGMA max_page_count` on a pool
+//! of one connection (the limit is per connection), which needs no root or
+//! tmpfs: SQLite then fails page allocation with SQLITE_FULL, the error a
+//! full disk gives. A full tmpfs would fail the commit's write to the WAL
+//! instead; both end in the same rollback path (`db::WriteTx`).
+
+use crate::common;
+
+use std::sync::atomic::{AtomicI64, Ordering};
+
+use common::{example, post, send};
+use fieldbal::http::{self, AppState};
+use serde_json::Value;
+
+/// The page limit, applied to the pool's connection now and to any
+/// connection the pool opens later (the service closes one whose rollback
+/// failed, which SQLite's own rollback on SQLITE_FULL makes happen).
+static MAX_PAGES: AtomicI64 = AtomicI64::new(1_000_000);
+
+async fn page_count(pool: &sqlx::AnyPool) -> i64 {
+    sqlx::query_scalar("PRAGMA page_count")
+        .fetch_one(pool)
+        .await
+        .unwrap()
+}
+
+async fn set_max_pages(pool: &sqlx::AnyPool, pages: i64) {
+    MAX_PAGES.store(pages, Ordering::SeqCst);
+    sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
+        .execute(pool)
+        .await
+        .unwrap();
+}
+
+/// Each new connection's set-up: the current page limit.
+fn limit_pages(
+    conn: &mut sqlx::AnyConnection,
+) -> std::pin::Pin<Box<dyn std::future::Future<Output = sqlx::Result<()>> + Send + '_>> {
+    Box::pin(async move {
+        let pages = MAX_PAGES.load(Ordering::SeqCst);
+        sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
+            .execute(&mut *conn)
+            .await?;
+        Ok(())
+    })
+}
+
+#[tokio::test]
+async fn writes_fail_cleanly_on_a_full_disk_and_recover_once_space_is_freed() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("full.db");
+    // One connection: the page limit applies to it, and a connection left
+    // inside a transaction would block every later request.
+    let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
+        .await
+        .unwrap();
+    let state = AppState::new(pool.clone());
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    let server = tokio::spawn(http::serve(listener, state, async {
+        let _ = stopped.await;
+    }));
+    let client = reqwest::Client::new();
+    let url = |p: &str| format!("http://{addr}{p}");
+    let session: Value = example("compressor-multispeed-noisy.json")["session"].clone();
+
+    let (status, _, _) = send(client.get(url("/healthz"))).await;
+    assert_eq!(status, 200);
+    set_max_pages(&pool, page_count(&pool).await + 2).await;
+
+    // Fill the allowed pages; a bounded number of sessions does it.
+    let mut refused = None;
+    for _ in 0..200 {
+        let (status, _, body) = post(&client, &url("/api/v1/sessions"), &session).await;
+        if status != 201 {
+            refused = Some((status, body));
+            break;
+        }
+    }
+    let (status, body) = refused.expect("the page limit is reached within 200 sessions");
+    assert_eq!(status, 507, "{body}");
+    assert_eq!(body["error"]["code"], "storage_full");
+    assert!(body["error"]["message"]
+        .as_str()
+        .unwrap()
+        .contains("nothing was stored"));
+    let (status, _, body) = send(client.get(url("/healthz"))).await;
+    assert_eq!(status, 503, "{body}");
+    assert_eq!(body["error"]["code"], "not_ready");
+    // Reads still work on a full disk.
+    let (status, _, _) = send(client.get(url("/api/v1/sessions"))).await;
+    assert_eq!(status, 200);
+
+    set_max_pages(&pool, 1_000_000).await;
+    for _ in 0..3 {
+        let (status, _, body) = post(&client, &url("/api/v1/sessions"), &session).await;
+        assert_eq!(status, 201, "writes recover once space is freed: {body}");
+    }
+    let (status, _, _) = send(client.get(url("/healthz"))).await;
+    assert_eq!(status, 200);
+    let _ = stop.send(());
+    server.await.unwrap().unwrap();
+}
+
+#[tokio::test]
+async fn serve_refuses_to_start_on_a_read_only_database() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("ro.db");
+    // Create it, then open it read-only (file permissions do not stop root).
+    drop(fieldbal::db::connect(path.to_str().unwrap()).await.unwrap());
+    let url = format!("sqlite://{}?mode=ro", path.display());
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "127.0.0.1:0", "--database", &url])
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let log = String::from_utf8_lossy(&out.stderr);
+    assert!(log.contains("read-only"), "{log}");
+}

@@ -1,0 +1,269 @@
+//! Bad input to the identification endpoints, through a real server: the
+//! contract's 4xx errors naming the field (too few speeds or samples, a
+//! non-square or asymmetric matrix, a shape of the wrong length, NaN, a
+//! non-positive step), as a table.
+
+use crate::common;
+use crate::support;
+
+use common::{fresh_server, post};
+use fieldbal::balancing::model::Unit;
+use serde_json::{json, Value};
+use support::{free_decay_request, model_request, session, speeds, Jeffcott};
+
+/// A valid rotor request with `change` applied to it.
+fn rotor_with(change: impl FnOnce(&mut Value)) -> Value {
+    let rotor = Jeffcott::with(100.0, 2000.0, 0.05);
+    let mut v = json!({"session": session(&[rotor], &speeds(1000.0, 3000.0, 5), Unit::UmPp, 0.0, 0), "options": {}});
+    change(&mut v);
+    v
+}
+
+fn with(mut v: Value, change: impl FnOnce(&mut Value)) -> Value {
+    change(&mut v);
+    v
+}
+
+#[tokio::test]
+async fn bad_input_is_refused_with_the_field_named() {
+    let two_speeds = rotor_with(|v| {
+        for run in v["session"]["runs"].as_array_mut().unwrap() {
+            run["readings"].as_array_mut().unwrap().truncate(2);
+        }
+    });
+    let cases: Vec<(&str, &str, Value, u16, &str)> = vec![
+        (
+            "two speeds",
+            "rotor",
+            two_speeds,
+            422,
+            "session.runs[0].readings",
+        ),
+        (
+            "range leaves too few speeds",
+            "rotor",
+            rotor_with(|v| v["options"]["speed_range_rpm"] = json!([900, 1600])),
+            422,
+            "options.speed_range_rpm",
+        ),
+        (
+            "reversed range",
+            "rotor",
+            rotor_with(|v| v["options"]["speed_range_rpm"] = json!([3000, 1000])),
+            422,
+            "options.speed_range_rpm",
+        ),
+        (
+            "unknown sensor",
+            "rotor",
+            rotor_with(|v| v["options"]["sensors"] = json!(["9V"])),
+            422,
+            "options.sensors[0]",
+        ),
+        (
+            "negative mass",
+            "rotor",
+            rotor_with(|v| v["options"]["mass_kg"] = json!(-3)),
+            422,
+            "options.mass_kg",
+        ),
+        (
+            "known mass, no radius",
+            "rotor",
+            rotor_with(|v| {
+                v["options"]["mass_kg"] = json!(100);
+                v["session"]["planes"][0]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("radius_mm");
+            }),
+            422,
+            "session.planes[0].radius_mm",
+        ),
+        (
+            "negative amplitude",
+            "rotor",
+            rotor_with(|v| v["session"]["runs"][1]["readings"][0]["amplitude"] = json!(-1)),
+            422,
+            "session.runs[1].readings[0].amplitude",
+        ),
+        (
+            "no trial run",
+            "rotor",
+            rotor_with(|v| {
+                v["session"]["runs"].as_array_mut().unwrap().pop();
+            }),
+            422,
+            "session.runs",
+        ),
+        (
+            "unknown option",
+            "rotor",
+            rotor_with(|v| v["options"]["speed_rang_rpm"] = json!([1, 2])),
+            400,
+            "options.speed_rang_rpm",
+        ),
+        (
+            "seven samples",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                v["samples"].as_array_mut().unwrap().truncate(7);
+            }),
+            422,
+            "samples",
+        ),
+        (
+            "zero step",
+            "free-decay",
+            with(free_decay_request(), |v| v["dt_s"] = json!(0)),
+            422,
+            "dt_s",
+        ),
+        (
+            "negative step",
+            "free-decay",
+            with(free_decay_request(), |v| v["dt_s"] = json!(-0.1)),
+            422,
+            "dt_s",
+        ),
+        (
+            "NaN sample",
+            "free-decay",
+            with(free_decay_request(), |v| v["samples"][3] = json!("NaN")),
+            422,
+            "samples[3]",
+        ),
+        (
+            "all zero",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                v["samples"] = json!(vec![0.0; 12])
+            }),
+            422,
+            "samples",
+        ),
+        (
+            "unknown law",
+            "free-decay",
+            with(free_decay_request(), |v| v["damping"] = json!("coulomb")),
+            422,
+            "damping",
+        ),
+        (
+            "non-square",
+            "model",
+            with(model_request(), |v| v["mass"]["fixed"][1] = json!([1.0])),
+            422,
+            "mass.fixed[1]",
+        ),
+        (
+            "asymmetric",
+            "model",
+            with(model_request(), |v| {
+                v["stiffness"]["parameters"][1][1][0] = json!(-2.0)
+            }),
+            422,
+            "stiffness.parameters[1][1][0]",
+        ),
+        (
+            "wrong size",
+            "model",
+            with(model_request(), |v| {
+                v["stiffness"]["parameters"][0] = json!([[1.0]])
+            }),
+            422,
+            "stiffness.parameters[0]",
+        ),
+        (
+            "shape too long",
+            "model",
+            with(model_request(), |v| {
+                v["modes"][1]["shape"] = json!([1.0, 2.0, 3.0])
+            }),
+            422,
+            "modes[1].shape",
+        ),
+        (
+            "NaN in a matrix",
+            "model",
+            with(model_request(), |v| v["mass"]["fixed"][0][0] = json!("NaN")),
+            422,
+            "mass.fixed[0][0]",
+        ),
+        (
+            "zero frequency",
+            "model",
+            with(model_request(), |v| {
+                v["modes"][0]["frequency_hz"] = json!(0)
+            }),
+            422,
+            "modes[0].frequency_hz",
+        ),
+        (
+            "negative weight",
+            "model",
+            with(model_request(), |v| v["modes"][0]["weight"] = json!(-1)),
+            422,
+            "modes[0].weight",
+        ),
+        (
+            "no parameters",
+            "model",
+            with(model_request(), |v| {
+                v["stiffness"]["parameters"] = json!([])
+            }),
+            422,
+            "stiffness.parameters",
+        ),
+        (
+            "initial of wrong length",
+            "model",
+            with(model_request(), |v| {
+                v["initial"] = json!({"stiffness_parameters": [1.0]})
+            }),
+            422,
+            "initial.stiffness_parameters",
+        ),
+    ];
+    let (_dir, server, client) = fresh_server().await;
+    for (name, what, body, want_status, want_field) in cases {
+        let (status, _, answer) = post(
+            &client,
+            &server.url(&format!("/api/v1/identify/{what}")),
+            &body,
+        )
+        .await;
+        assert_eq!(status, want_status, "{name}: {answer}");
+        assert_eq!(answer["error"]["field"], want_field, "{name}: {answer}");
+        assert!(
+            answer["error"]["code"].is_string() && answer["error"]["message"].is_string(),
+            "{name}: {answer}"
+        );
+    }
+    server.shutdown().await;
+}
+
+#[tokio::test]
+async fn results_that_overflow_are_refused_rather_than_answered_as_null() {
+    // Both were answered 200 with null (fuzzing, session 15).
+    let (_dir, server, client) = fresh_server().await;
+    let cases = [
+        (
+            "free-decay",
+            with(free_decay_request(), |v| v["samples"][1] = json!(1e150)),
+        ),
+        (
+            "model",
+            with(model_request(), |v| {
+                v["stiffness"]["fixed"][0][0] = json!(1e300)
+            }),
+        ),
+    ];
+    for (what, body) in cases {
+        let url = server.url(&format!("/api/v1/identify/{what}"));
+        let (status, _, answer) = post(&client, &url, &body).await;
+        assert_eq!(status, 422, "{what}: {answer}");
+        assert_eq!(answer["error"]["code"], "not_finite", "{what}: {answer}");
+    }
+    server.shutdown().await;
+}

@@ -1,0 +1,62 @@
+//! The CLI carries the job too: `fieldbal solve --options` with `from_run`,
+//! and `fieldbal coefficients SESSION...` pooling session files.
+
+use crate::support;
+
+use std::process::Command;
+
+use fieldbal::balancing::model::Conventions;
+use serde_json::{json, Value};
+use support::*;
+
+fn trials(seed: u64) -> Value {
+    let (rotor, conv) = (Rotor::new(), Conventions::default());
+    let mut n = Noise::new(1.0, 1.0, seed);
+    session(conv, first_runs(&rotor, conv, &mut n, &NO_RUNOUT, 0.0))
+}
+
+fn fieldbal(args: &[&str]) -> (i32, Value) {
+    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(args)
+        .output()
+        .expect("runs");
+    let v = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    (out.status.code().unwrap_or(-1), v)
+}
+
+#[test]
+fn coefficients_pools_session_files_and_solve_takes_the_new_options() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |n: &str| dir.path().join(n).to_str().unwrap().to_string();
+    std::fs::write(path("a.json"), trials(1).to_string()).unwrap();
+    std::fs::write(path("b.json"), json!({"session": trials(2)}).to_string()).unwrap();
+    let (code, pooled) = fieldbal(&["coefficients", &path("a.json"), &path("b.json")]);
+    assert_eq!(code, 0, "{pooled}");
+    assert_eq!(pooled["sessions"], json!([path("a.json"), path("b.json")]));
+    assert_eq!(
+        pooled["influence_coefficients"].as_array().unwrap().len(),
+        8
+    );
+
+    // Those coefficients solve a file with only its reference run, and from_run is accepted.
+    let mut only_ref = trials(3);
+    only_ref["runs"].as_array_mut().unwrap().truncate(1);
+    std::fs::write(path("c.json"), only_ref.to_string()).unwrap();
+    let options =
+        json!({"influence_coefficients": pooled["influence_coefficients"], "from_run": "zero"});
+    std::fs::write(path("o.json"), options.to_string()).unwrap();
+    let (code, sol) = fieldbal(&["solve", &path("c.json"), "--options", &path("o.json")]);
+    assert_eq!(code, 0, "{sol}");
+    assert_eq!(sol["from_run"], "zero");
+    assert_eq!(sol["corrections"].as_array().unwrap().len(), 2);
+
+    std::fs::write(path("bad.json"), json!({"exclude": true}).to_string()).unwrap();
+    let (code, err) = fieldbal(&[
+        "coefficients",
+        &path("a.json"),
+        "--options",
+        &path("bad.json"),
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(err["error"]["field"], "options.exclude");
+}

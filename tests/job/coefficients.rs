@@ -1,0 +1,308 @@
+//! Trim balancing from supplied or pooled coefficients: a session with only its
+//! reference run solves against `influence_coefficients`; trial runs check them
+//! (`coefficients_disagree`); sessions pool into one influence matrix with its
+//! covariance, naming a session whose rotor changed.
+
+use crate::support;
+
+use fieldbal::balancing::job::pool::{pool, PoolOptions};
+use fieldbal::balancing::model::Conventions;
+use fieldbal::balancing::phasor::{angle_diff_deg, weight_out};
+use fieldbal::balancing::Session;
+use serde_json::{json, Value};
+use support::*;
+
+/// The rotor's exact coefficients as the option lists them, in `conv`.
+fn exact_coefficients(rotor: &Rotor, conv: Conventions, sd: Option<f64>) -> Value {
+    supplied(&rotor.w, conv, |_, _| {
+        sd.map(|sd| [[sd * sd, 0.0], [0.0, sd * sd]])
+    })
+}
+
+/// A reference run and trials (one per plane, or none), from `rotor`.
+fn runs(rotor: &Rotor, conv: Conventions, trials: bool, noise: &mut Noise) -> Vec<Value> {
+    let mut r = opening_runs(rotor, conv, trials, noise);
+    if !trials {
+        return r;
+    }
+    r.push(run(
+        rotor,
+        conv,
+        "both",
+        &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
+        &vec![(0, 30.0, 200.0), (1, 30.0, 300.0)],
+        noise,
+        &NO_RUNOUT,
+    ));
+    r
+}
+
+#[test]
+fn a_session_with_only_its_reference_run_solves_against_supplied_coefficients() {
+    let rotor = Rotor::new();
+    let best = rotor.optimum();
+    for conv in Conventions::ALL {
+        let s = session(conv, runs(&rotor, conv, false, &mut Noise::none()));
+        let sol = solve_json(
+            &s,
+            json!({"influence_coefficients": exact_coefficients(&rotor, conv, None)}),
+        );
+        for (j, p) in PLANES.iter().enumerate() {
+            assert!(
+                (correction(conv, &sol, p) - best[j]).norm() < 1e-9 * best[j].norm(),
+                "{conv:?} {p}"
+            );
+        }
+        assert!(sol.run_checks.is_none());
+        assert!(
+            !sol.warnings.iter().any(|w| w.code == "trial_effect_small"),
+            "{:?}",
+            sol.warnings
+        );
+        assert_eq!(sol.influence_coefficients.len(), 8);
+    }
+}
+
+#[test]
+fn the_coefficients_covariance_widens_the_correction_uncertainty() {
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let s = session(conv, runs(&rotor, conv, false, &mut Noise::none()));
+    let without = solve_json(
+        &s,
+        json!({"influence_coefficients": exact_coefficients(&rotor, conv, None)}),
+    );
+    let with = solve_json(
+        &s,
+        json!({"influence_coefficients": exact_coefficients(&rotor, conv, Some(0.05))}),
+    );
+    for (a, b) in without.corrections.iter().zip(&with.corrections) {
+        let (ua, ub) = (
+            a.uncertainty.as_ref().unwrap(),
+            b.uncertainty.as_ref().unwrap(),
+        );
+        let tr = |u: &fieldbal::balancing::solution::Uncertainty| {
+            u.covariance_g2[0][0] + u.covariance_g2[1][1]
+        };
+        assert!(tr(ub) > 1.5 * tr(ua), "{}: {ua:?} vs {ub:?}", a.plane);
+        assert!((a.mass_g - b.mass_g).abs() < 1e-9 * a.mass_g);
+    }
+}
+
+#[test]
+fn trial_runs_of_a_changed_rotor_disagree_with_supplied_coefficients() {
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let coefficients = exact_coefficients(&rotor, conv, Some(0.01));
+    let same = session(conv, runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 7)));
+    let sol = solve_json(&same, json!({"influence_coefficients": coefficients}));
+    assert!(
+        !sol.warnings
+            .iter()
+            .any(|w| w.code == "coefficients_disagree"),
+        "{:?}",
+        sol.warnings
+    );
+    assert_eq!(sol.run_checks.as_ref().map(Vec::len), Some(3));
+
+    let changed = session(
+        conv,
+        runs(&rotor.scaled(1.3), conv, true, &mut Noise::new(1.0, 1.0, 7)),
+    );
+    let sol = solve_json(&changed, json!({"influence_coefficients": coefficients}));
+    assert!(
+        sol.warnings
+            .iter()
+            .any(|w| w.code == "coefficients_disagree"),
+        "{:?}",
+        sol.warnings
+    );
+    assert!(sol.run_checks.unwrap().iter().all(|c| !c.consistent));
+}
+
+fn parsed(v: &Value) -> Session {
+    serde_json::from_value(v.clone()).unwrap()
+}
+
+#[test]
+fn two_sessions_pool_into_coefficients_that_give_the_exact_correction_within_their_uncertainty() {
+    let rotor = Rotor::new();
+    let best = rotor.optimum();
+    for conv in [Conventions::default(), Conventions::ALL[3]] {
+        let sessions = vec![
+            (
+                "s1".to_string(),
+                parsed(&session(
+                    conv,
+                    runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 11)),
+                )),
+            ),
+            (
+                "s2".to_string(),
+                parsed(&session(
+                    conv,
+                    runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 12)),
+                )),
+            ),
+        ];
+        let pooled = pool(&sessions, &PoolOptions::default()).expect("pools");
+        assert!(pooled.warnings.is_empty(), "{:?}", pooled.warnings);
+        assert_eq!(pooled.sessions, ["s1", "s2"]);
+        assert_eq!(pooled.influence_coefficients.len(), 8);
+        // A new job: only its reference run (exact readings), the pooled coefficients.
+        let s = session(conv, runs(&rotor, conv, false, &mut Noise::none()));
+        let coefficients = serde_json::to_value(&pooled.influence_coefficients).unwrap();
+        let sol = solve_json(&s, json!({"influence_coefficients": coefficients}));
+        for (j, p) in PLANES.iter().enumerate() {
+            let c = sol.corrections.iter().find(|c| c.plane == *p).unwrap();
+            let u = c.uncertainty.as_ref().unwrap();
+            let (m, a) = weight_out(conv, best[j]);
+            assert!(
+                u.mass_g.unwrap()[0] <= m && m <= u.mass_g.unwrap()[1],
+                "{conv:?} {p}: {m} outside {:?}",
+                u.mass_g
+            );
+            let mid = (u.angle_deg[0] + u.angle_deg[1]) / 2.0;
+            let half = (u.angle_deg[1] - u.angle_deg[0]) / 2.0;
+            assert!(
+                angle_diff_deg(a, mid) <= half,
+                "{conv:?} {p}: {a} outside {:?}",
+                u.angle_deg
+            );
+            // The uncertainty is that of the coefficients: not zero, not useless.
+            assert!(
+                u.mass_g.unwrap()[1] - u.mass_g.unwrap()[0] > 0.0
+                    && u.mass_g.unwrap()[1] - u.mass_g.unwrap()[0] < 0.5 * m,
+                "{u:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_session_whose_rotor_changed_is_named_and_left_out_on_request() {
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let sessions = vec![
+        (
+            "s1".to_string(),
+            parsed(&session(
+                conv,
+                runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 21)),
+            )),
+        ),
+        (
+            "s2".to_string(),
+            parsed(&session(
+                conv,
+                runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 22)),
+            )),
+        ),
+        (
+            "changed".to_string(),
+            parsed(&session(
+                conv,
+                runs(
+                    &rotor.scaled(1.3),
+                    conv,
+                    true,
+                    &mut Noise::new(1.0, 1.0, 23),
+                ),
+            )),
+        ),
+    ];
+    let pooled = pool(&sessions, &PoolOptions::default()).expect("pools");
+    let w = pooled
+        .warnings
+        .iter()
+        .find(|w| w.code == "coefficients_disagree")
+        .expect("warned");
+    assert!(w.message.contains("'changed'"), "{}", w.message);
+    let flagged: Vec<&str> = pooled
+        .checks
+        .iter()
+        .filter(|c| !c.consistent)
+        .map(|c| c.session.as_str())
+        .collect();
+    assert_eq!(flagged, ["changed"]);
+    assert_eq!(pooled.sessions.len(), 3);
+
+    let options = PoolOptions {
+        exclude_disagreeing: Some(true),
+        ..PoolOptions::default()
+    };
+    let kept = pool(&sessions, &options).expect("pools");
+    assert_eq!(kept.sessions, ["s1", "s2"]);
+    assert_eq!(kept.excluded, ["changed"]);
+    // Without the changed session the coefficients are the rotor's.
+    for c in &kept.influence_coefficients {
+        let a = SENSORS.iter().position(|s| *s == c.sensor).unwrap()
+            + 2 * SPEEDS.iter().position(|s| *s == c.speed_rpm).unwrap();
+        let j = PLANES.iter().position(|p| *p == c.plane).unwrap();
+        let w = phasor(conv, c.amplitude_per_g, c.phase_deg);
+        // Within 3 standard deviations of their own stated covariance.
+        let cov = c.covariance.expect("covariance");
+        let sd = (cov[0][0] + cov[1][1]).sqrt();
+        assert!((w - rotor.w[(a, j)]).norm() < 3.0 * sd, "{c:?}");
+    }
+}
+
+#[test]
+fn supplied_coefficients_that_miss_a_sensor_or_name_an_unknown_one_are_rejected() {
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let s = parsed(&session(
+        conv,
+        runs(&rotor, conv, false, &mut Noise::none()),
+    ));
+    let full = exact_coefficients(&rotor, conv, None);
+    let mut missing = full.clone();
+    missing.as_array_mut().unwrap().pop();
+    let mut unknown = full.clone();
+    unknown[3]["sensor"] = json!("9X");
+    let mut bad_cov = full.clone();
+    bad_cov[2]["covariance"] = json!([[1.0, 0.0], [0.0, -1.0]]);
+    let mut nan = full.clone();
+    nan[1]["amplitude_per_g"] = json!(-1.0);
+    let cases = [
+        (
+            missing,
+            "missing_coefficient",
+            "options.influence_coefficients",
+        ),
+        (
+            unknown,
+            "unknown_sensor",
+            "options.influence_coefficients[3].sensor",
+        ),
+        (
+            bad_cov,
+            "invalid_value",
+            "options.influence_coefficients[2].covariance",
+        ),
+        (
+            nan,
+            "invalid_value",
+            "options.influence_coefficients[1].amplitude_per_g",
+        ),
+        (
+            json!(null),
+            "coefficients_unavailable",
+            "options.coefficients_from",
+        ),
+    ];
+    for (coefficients, code, field) in cases {
+        let o = if coefficients.is_null() {
+            json!({"coefficients_from": {"machine": "ID-FAN-3"}})
+        } else {
+            json!({"influence_coefficients": coefficients})
+        };
+        let options = serde_json::from_value(o).unwrap();
+        let err = fieldbal::balancing::solve(&s, &options).unwrap_err();
+        assert_eq!(
+            (err.code, err.field.as_deref()),
+            (code, Some(field)),
+            "{err:?}"
+        );
+    }
+}

@@ -1,7 +1,7 @@
 //! Min-max and mass-bounded corrections as second-order cone programs
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
 //! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
-//! against Clarabel's full program (tests/minmax_equivalence.rs), with
+//! against Clarabel's full program (tests/solve/minmax/equivalence.rs), with
 //! Clarabel again wherever that method's arithmetic fails.
 //!
 //! The caller hands over the weighted problem `r = b + A x` (rows of `A` and `b`
@@ -99,7 +99,7 @@ pub fn solve_cone_within(
 }
 
 /// [`solve_cone_within`] with the min-max rows handled by `strategy`; both
-/// give the same answer to the solver's tolerance (tests/minmax_equivalence.rs).
+/// give the same answer to the solver's tolerance (tests/solve/minmax/equivalence.rs).
 pub fn solve_cone_with(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,

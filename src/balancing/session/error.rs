@@ -81,7 +81,7 @@ impl InputError {
 /// are exactly the tracked parse's. Both parses run the same `Deserialize`
 /// code on the same `serde_json` reader (the tracking deserializer forwards
 /// every call), so they accept the same documents and build the same value
-/// (`tests/parse_equivalence.rs`).
+/// (`tests/solve/parse_equivalence.rs`).
 pub fn from_json<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputError> {
     match as_text(bytes).and_then(|text| serde_json::from_str(text).ok()) {
         Some(value) => Ok(value),

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 use sqlx::Row;
 use utoipa::ToSchema;
 
+use super::idempotency::{self, Idem};
 use super::{engine, sessions, Db, StoreError};
 use crate::balancing::model::{Rotor, Session};
 
@@ -107,9 +108,17 @@ fn machine_from(r: &sqlx::any::AnyRow) -> Result<Machine, StoreError> {
     })
 }
 
-/// Store a validated machine; `Conflict` when the id is taken.
-pub async fn create(db: &Db, m: &NewMachine) -> Result<Machine, StoreError> {
+/// Store a validated machine; `Conflict` when the id is taken. With an
+/// `Idempotency-Key`, the 201 answer (with its `location`) is kept in the
+/// same transaction (`Replayed` when a request with the key got there first).
+pub async fn create(
+    db: &Db,
+    m: &NewMachine,
+    idem: Option<&Idem>,
+    location: &str,
+) -> Result<Machine, StoreError> {
     let mut tx = db.begin_write().await?;
+    idempotency::guard(&mut tx, idem).await?;
     let rotor = m.rotor.as_ref().map(serde_json::to_string).transpose()?;
     // The unique id decides, so two processes creating the same machine at
     // once get one 201 and one 409.
@@ -129,6 +138,7 @@ pub async fn create(db: &Db, m: &NewMachine) -> Result<Machine, StoreError> {
         message: format!("a machine with the id '{}' exists already", m.id),
     })?;
     let machine = machine_from(&row)?;
+    idempotency::remember(&mut tx, idem, 201, Some(location), &machine).await?;
     tx.commit().await?;
     Ok(machine)
 }
@@ -259,14 +269,18 @@ pub async fn load_sessions(
     Ok(Ok(out))
 }
 
-/// Store a new coefficient version; returns it.
+/// Store a new coefficient version; returns it. With an `Idempotency-Key`,
+/// the 201 answer is kept in the same transaction (`Replayed` when a request
+/// with the key got there first).
 pub async fn store_coefficients(
     db: &Db,
     machine: &str,
     sessions: &[String],
     body: serde_json::Map<String, serde_json::Value>,
+    idem: Option<&Idem>,
 ) -> Result<StoredCoefficients, StoreError> {
     let mut tx = db.begin_write().await?;
+    idempotency::guard(&mut tx, idem).await?;
     // Lock the machine so that concurrent versions (other replicas) are
     // allocated one after the other; UNIQUE (machine_seq, version) backs it.
     let lock = engine::for_update(&tx, "SELECT seq FROM machines WHERE id = $1");
@@ -289,14 +303,16 @@ pub async fn store_coefficients(
     .fetch_optional(&mut *tx)
     .await?
     .ok_or_else(|| not_found(machine))?;
-    tx.commit().await?;
-    Ok(StoredCoefficients {
+    let stored = StoredCoefficients {
         machine: machine.to_string(),
         version: row.get("version"),
         created_at: row.get("created_at"),
         sessions: sessions.to_vec(),
         body,
-    })
+    };
+    idempotency::remember(&mut tx, idem, 201, None, &stored).await?;
+    tx.commit().await?;
+    Ok(stored)
 }
 
 /// Why stored coefficients could not be read.

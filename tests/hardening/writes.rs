@@ -82,6 +82,56 @@ async fn runs_and_solutions_posted_twice_with_one_key_are_stored_once() {
 }
 
 #[tokio::test]
+async fn machines_and_coefficient_versions_posted_twice_with_one_key_are_stored_once() {
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/machines");
+    let machine = json!({"id": "P-1", "name": "pump 1"});
+    let (s1, h1, b1) = post_keyed(&client, &url, "m-key", &machine).await;
+    let (s2, h2, b2) = post_keyed(&client, &url, "m-key", &machine).await;
+    assert_eq!((s1, s2), (201, 201), "{b2}");
+    assert_eq!(b1, b2, "the first answer again");
+    assert_eq!(h1["location"], h2["location"]);
+    assert_eq!(h2["idempotent-replayed"], "true");
+    let (status, _, body) =
+        post_keyed(&client, &url, "m-key", &json!({"id": "P-2", "name": "x"})).await;
+    assert_eq!(status, 422, "{body}");
+    assert_eq!(body["error"]["code"], "idempotency_key_reused");
+    assert_eq!(body["error"]["field"], "Idempotency-Key");
+
+    let mut session = two_plane();
+    session["machine"] = json!("P-1");
+    let id = store(&client, &server, &session).await;
+    let pool_url = server.url("/api/v1/machines/P-1/coefficients");
+    let pool = json!({"sessions": [id]});
+    let (s1, _, b1) = post_keyed(&client, &pool_url, "c-key", &pool).await;
+    let (s2, h2, b2) = post_keyed(&client, &pool_url, "c-key", &pool).await;
+    assert_eq!((s1, s2), (201, 201), "{b2}");
+    assert_eq!(b1["version"], 1);
+    assert_eq!(b1, b2, "version 1 again, not a version 2");
+    assert_eq!(h2["idempotent-replayed"], "true");
+    let (_, _, detail) = send(client.get(server.url("/api/v1/machines/P-1"))).await;
+    assert_eq!(
+        detail["coefficients"].as_array().unwrap().len(),
+        1,
+        "{detail}"
+    );
+}
+
+#[tokio::test]
+async fn a_machine_id_no_header_can_carry_is_answered_201_with_an_encoded_location() {
+    // A raw control character in `Location` made the answer a 500 after the
+    // machine was stored: a refusal that stored something.
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/machines");
+    let (status, headers, body) = post(&client, &url, &json!({"id": "a\nb", "name": "x"})).await;
+    assert_eq!(status, 201, "{body}");
+    assert_eq!(headers["location"], "/api/v1/machines/a%0Ab");
+    assert_eq!(body["id"], "a\nb");
+    let (status, _, got) = send(client.get(server.url("/api/v1/machines/a%0Ab"))).await;
+    assert_eq!((status, &got["id"]), (200, &json!("a\nb")));
+}
+
+#[tokio::test]
 async fn a_put_with_a_stale_if_match_is_refused_with_412() {
     let (_dir, server, client) = fresh_server().await;
     let session = two_plane();

@@ -5,8 +5,8 @@
 
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::{header, StatusCode};
-use axum::response::IntoResponse;
+use axum::http::{header, HeaderMap, StatusCode};
+use axum::response::{IntoResponse, Response};
 use axum::Json;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
@@ -16,10 +16,12 @@ use crate::balancing::InputError;
 use crate::db::machines::{
     self, MachineDetail, MachineList, Missing, NewMachine, StoredCoefficients,
 };
+use crate::db::{idempotency, StoreError};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
-use crate::http::headers::invalid_query;
+use crate::http::headers::{self, invalid_query};
 use crate::http::responses::{MalformedJson, PageRefused, SolverBusy};
+use crate::http::runs::encode_segment;
 use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -61,20 +63,33 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
          headers(("Location" = String, description = "/api/v1/machines/{id}"))),
         MalformedJson,
         (status = 409, description = "A machine with this id exists", body = ErrorBody),
-        (status = 422, description = "Invalid machine", body = ErrorBody),
-    ))]
+        (status = 422, description = "Invalid machine, or an Idempotency-Key used for another request", body = ErrorBody),
+    ),
+    params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")))]
 pub async fn create(
     State(state): State<AppState>,
+    request_headers: HeaderMap,
     JsonBody(m): JsonBody<NewMachine>,
-) -> Result<impl IntoResponse, ApiError> {
+) -> Result<Response, ApiError> {
+    let idem = headers::idempotency(&request_headers, "POST", "/api/v1/machines", &m)?;
+    if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
+        return Ok(headers::replay(r));
+    }
     validate(&m)?;
-    let machine = machines::create(&state.db, &m).await?;
-    let location = format!("/api/v1/machines/{}", machine.id);
+    // Percent-encoded: any id is a valid header value (a control character
+    // in a raw `Location` failed the answer after the commit).
+    let location = format!("/api/v1/machines/{}", encode_segment(&m.id));
+    let written = machines::create(&state.db, &m, idem.as_ref(), &location).await;
+    let machine = match written {
+        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+        other => other?,
+    };
     Ok((
         StatusCode::CREATED,
         [(header::LOCATION, location)],
         Json(machine),
-    ))
+    )
+        .into_response())
 }
 
 #[utoipa::path(get, path = "/api/v1/machines", tag = "machines",
@@ -138,12 +153,19 @@ pub struct PoolRequest {
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
         SolverBusy,
-    ))]
+    ),
+    params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores no new version")))]
 pub async fn pool_coefficients(
     State(state): State<AppState>,
     Path(id): Path<String>,
+    request_headers: HeaderMap,
     JsonBody(req): JsonBody<PoolRequest>,
-) -> Result<(StatusCode, Json<StoredCoefficients>), Refused> {
+) -> Result<Response, Refused> {
+    let path = format!("/api/v1/machines/{id}/coefficients");
+    let idem = headers::idempotency(&request_headers, "POST", &path, &req)?;
+    if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
+        return Ok(headers::replay(r));
+    }
     if !machines::exists(&state.db, &id).await? {
         return Err(no_machine(&id).into());
     }
@@ -199,8 +221,13 @@ pub async fn pool_coefficients(
         }
         _ => return Err(ApiError::internal(&"pooled coefficients are not an object").into()),
     };
-    let stored = machines::store_coefficients(&state.db, &id, &pooled.sessions, body).await?;
-    Ok((StatusCode::CREATED, Json(stored)))
+    let stored =
+        machines::store_coefficients(&state.db, &id, &pooled.sessions, body, idem.as_ref()).await;
+    let stored = match stored {
+        Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+        other => other?,
+    };
+    Ok((StatusCode::CREATED, Json(stored)).into_response())
 }
 
 /// `?version=n`.

@@ -47,7 +47,7 @@ fn relative_to_run(mut e: InputError, index: usize) -> InputError {
 }
 
 /// Percent-encode a path segment (run ids may hold spaces and slashes).
-fn encode_segment(s: &str) -> String {
+pub(crate) fn encode_segment(s: &str) -> String {
     s.bytes()
         .map(|b| match b {
             b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => {

@@ -113,9 +113,30 @@ impl Page {
     }
 }
 
-/// A query string that does not parse: 400 with the contract's body.
+/// A query string that does not parse: 400 with the contract's body,
+/// naming the parameter at fault when axum's message does.
 pub fn invalid_query(r: QueryRejection) -> ApiError {
-    ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", r.body_text())
+    let text = r.body_text();
+    let error = ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", text.clone());
+    match query_field(&text) {
+        Some(field) => error.with_field(field),
+        None => error,
+    }
+}
+
+/// The parameter axum's query message names: its `serde_path_to_error`
+/// prefix (`limit: invalid digit found in string`), or the name in
+/// `duplicate field `limit``. Query parameters are plain names.
+fn query_field(text: &str) -> Option<String> {
+    let rest = text.strip_prefix("Failed to deserialize query string: ")?;
+    let name = match rest.split_once(": ") {
+        Some((path, _)) => path,
+        None => rest.strip_prefix("duplicate field `")?.split('`').next()?,
+    };
+    let plain = !name.is_empty()
+        && name.len() <= 64
+        && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+    plain.then(|| name.to_string())
 }
 
 /// `limit` 1 to `max` (default `default`) and `offset` 0 or more (default 0),

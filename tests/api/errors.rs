@@ -61,7 +61,8 @@ fn cases() -> Vec<Case> {
         c("name is a number", "POST", sessions, JSON, with(|s| s["name"] = json!(5)), 422, "invalid_type", Some("name")),
         c("amplitude is a string", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][1]["amplitude"] = json!("88")), 422, "invalid_type", Some("runs[0].readings[1].amplitude")),
         c("NaN as a string", "POST", sessions, JSON, with(|s| s["runs"][1]["readings"][0]["phase_deg"] = json!("NaN")), 422, "invalid_type", Some("runs[1].readings[0].phase_deg")),
-        c("number beyond f64", "POST", sessions, JSON, Body::Raw(session().to_string().replacen("\"amplitude\":", "\"amplitude\":1e400,\"x\":", 1).into_bytes()), 400, "malformed_json", None),
+        c("number beyond f64", "POST", sessions, JSON, Body::Raw(session().to_string().replacen("\"amplitude\":", "\"amplitude\":1e400,\"x\":", 1).into_bytes()), 400, "malformed_json", Some("runs[0].readings[0].amplitude")),
+        c("mass beyond f64 in a posted run", "POST", "/api/v1/sessions/{id}/runs", JSON, Body::Raw(run(1).to_string().replacen("\"mass_g\":30.0", "\"mass_g\":-1e999", 1).replacen("\"trial inboard\"", "\"new\"", 1).into_bytes()), 400, "malformed_json", Some("weights[0].mass_g")),
         c("huge amplitude", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][0]["amplitude"] = json!(1e300)), 422, "invalid_value", Some("runs[0].readings[0].amplitude")),
         c("negative amplitude", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][2]["amplitude"] = json!(-1.0)), 422, "invalid_value", Some("runs[0].readings[2].amplitude")),
         c("negative mass", "POST", sessions, JSON, with(|s| s["runs"][1]["weights"][0]["mass_g"] = json!(-30)), 422, "invalid_value", Some("runs[1].weights[0].mass_g")),
@@ -108,7 +109,11 @@ fn cases() -> Vec<Case> {
         c("stored solve with a negative mass limit", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"max_mass_g": {"inboard": -5}})), 422, "invalid_value", Some("max_mass_g.inboard")),
         c("solve with a mass limit on an unknown plane", "POST", "/api/v1/solve", JSON, Body::Json(json!({"session": session(), "options": {"max_mass_g": {"middle": 5}}})), 422, "unknown_plane", Some("options.max_mass_g.middle")),
         c("list with limit 0", "GET", "/api/v1/sessions?limit=0", None, Body::None, 422, "out_of_range", Some("limit")),
-        c("list with a word for limit", "GET", "/api/v1/sessions?limit=many", None, Body::None, 400, "invalid_query", None),
+        c("list with a word for limit", "GET", "/api/v1/sessions?limit=many", None, Body::None, 400, "invalid_query", Some("limit")),
+        c("list with limit twice", "GET", "/api/v1/sessions?limit=1&limit=2", None, Body::None, 400, "invalid_query", Some("limit")),
+        c("list with an unknown parameter", "GET", "/api/v1/sessions?page=2", None, Body::None, 400, "invalid_query", Some("page")),
+        c("versions with a word for offset", "GET", "/api/v1/sessions/{id}/runs/{run}/versions?offset=x", None, Body::None, 400, "invalid_query", Some("offset")),
+        c("solutions with a limit beyond i64", "GET", "/api/v1/sessions/{id}/solutions?limit=99999999999999999999", None, Body::None, 400, "invalid_query", Some("limit")),
     ]
 }
 

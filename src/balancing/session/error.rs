@@ -117,6 +117,16 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
     let text = err.to_string();
     let message = strip_position(&text);
     match err.classify() {
+        // Well-formed JSON whose number is beyond f64 (`1e400`): the reader
+        // stops inside a value, so the tracked path names the field.
+        Category::Syntax if message == "number out of range" && !path.is_empty() => InputError {
+            kind: ErrorKind::Malformed,
+            code: "malformed_json",
+            message: format!(
+                "the body is not valid JSON: {message} (beyond ±1.8e308, the largest 64-bit number)"
+            ),
+            field: Some(path),
+        },
         Category::Syntax | Category::Eof | Category::Io => InputError {
             kind: ErrorKind::Malformed,
             code: "malformed_json",
@@ -190,6 +200,18 @@ mod tests {
             br#"{"name":"x","planes":[{"id":"A","radius_mm":"NaN"}],"sensors":[],"runs":[]}"#;
         let err = from_json::<Session>(body).unwrap_err();
         assert_eq!(err.kind, ErrorKind::Invalid);
+        assert_eq!(err.field.as_deref(), Some("planes[0].radius_mm"));
+    }
+
+    #[test]
+    fn a_number_beyond_f64_names_the_field() {
+        let body =
+            br#"{"name":"x","planes":[{"id":"A","radius_mm":1e400}],"sensors":[],"runs":[]}"#;
+        let err = from_json::<Session>(body).unwrap_err();
+        assert_eq!(
+            (err.kind, err.code),
+            (ErrorKind::Malformed, "malformed_json")
+        );
         assert_eq!(err.field.as_deref(), Some("planes[0].radius_mm"));
     }
 

@@ -94,6 +94,9 @@ struct Tally {
     checks: (usize, usize),
     /// Plane checks under a `trial_effect_small` warning.
     flagged: usize,
+    /// Per plane: realisations whose ellipse held (printed, not asserted: the
+    /// window is asserted on the planes pooled, method §8 "Session 17").
+    plane_held: Vec<usize>,
     /// Per plane: estimate − exact, per realisation.
     errors: Vec<Vec<Complex64>>,
 }
@@ -134,6 +137,7 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
     let planes = rotor.trial.len();
     let mut t = Tally {
         errors: vec![Vec::new(); planes],
+        plane_held: vec![0; planes],
         checks: (planes, rotor.y0.len()),
         ..Tally::default()
     };
@@ -180,6 +184,7 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
                 .try_inverse()
                 .is_some_and(|inv| (v.transpose() * inv * v)[0] <= CHI2_2_95);
             held += usize::from(inside);
+            t.plane_held[j] += usize::from(inside);
             let plane = format!("P{j}");
             t.flagged += usize::from(
                 sol.warnings
@@ -251,9 +256,13 @@ fn calibration(samples: bool, seed: u64) {
             effect * 100.0
         );
         eprintln!(
-            "{what}: ellipse {:.3} ± {:.3}, amplitude_95 {:.3} ± {:.3}, bias/sd {:.3?} (T² {t2:.1}), {:.0} % flagged",
+            "{what}: ellipse {:.3} ± {:.3} (per plane {:.3?}), amplitude_95 {:.3} ± {:.3}, bias/sd {:.3?} (T² {t2:.1}), {:.0} % flagged",
             e.0,
             e.1,
+            t.plane_held
+                .iter()
+                .map(|&h| h as f64 / t.ellipse.len() as f64)
+                .collect::<Vec<_>>(),
             a.0,
             a.1,
             bias.iter().map(|b| b.1).collect::<Vec<_>>(),

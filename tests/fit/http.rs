@@ -61,6 +61,35 @@ async fn trial_weights_are_suggested_for_a_session_with_only_its_reference_run()
 }
 
 #[tokio::test]
+async fn trial_weights_say_the_conventions_their_angles_are_in() {
+    // Like a solution, the answer echoes the session's conventions: an angle
+    // without its convention is half a number.
+    let (_dir, server, client) = fresh_server().await;
+    let conventions = json!({"phase": "lead", "angle_direction": "with_rotation"});
+    let s = with(|s| s["conventions"] = conventions.clone());
+    let (status, _, body) = post(
+        &client,
+        &server.url("/api/v1/trial-weights"),
+        &json!({"session": s}),
+    )
+    .await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["conventions"], conventions, "{body}");
+    let (_, _, body) = post(
+        &client,
+        &server.url("/api/v1/trial-weights"),
+        &json!({"session": session()}),
+    )
+    .await;
+    assert_eq!(
+        body["conventions"],
+        json!({"phase": "lag", "angle_direction": "against_rotation"}),
+        "the defaults, said: {body}"
+    );
+    server.shutdown().await;
+}
+
+#[tokio::test]
 async fn a_discrete_solve_over_http_lists_the_weights_and_the_static_and_couple_parts() {
     let (_dir, server, client) = fresh_server().await;
     let (status, _, body) = post(

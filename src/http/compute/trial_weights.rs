@@ -4,7 +4,11 @@
 use axum::extract::State;
 use axum::Json;
 
-use crate::balancing::fit::trial::{suggest, TrialRequest, TrialResponse};
+use serde::Serialize;
+use utoipa::ToSchema;
+
+use crate::balancing::fit::trial::{suggest, TrialRequest, TrialSuggestion};
+use crate::balancing::model::Conventions;
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
 use crate::http::responses::{BodyRefused, MalformedJson, SolverBusy};
@@ -30,7 +34,7 @@ Needs `rotor` and each plane's `radius_mm`.\n\n\
 With a kit on the plane: the stack of kit weights (at most max_per_place) at one fixed place nearest to that weight; \
 `place` and `weights` say which.",
     responses(
-        (status = 200, description = "One suggestion per selected plane", body = TrialResponse),
+        (status = 200, description = "One suggestion per selected plane, and the conventions of their angles", body = TrialAnswer),
         MalformedJson,
         BodyRefused,
         (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
@@ -39,16 +43,30 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
 pub async fn trial_weights(
     State(state): State<AppState>,
     JsonBody(req): JsonBody<TrialRequest>,
-) -> Result<Json<TrialResponse>, Refused> {
+) -> Result<Json<TrialAnswer>, Refused> {
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
     let options =
         coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;
     // Validating and solving the session costs like a solve: off the async
     // threads, in one of the solve slots.
     let session = req.session;
+    let conventions = session.conventions.unwrap_or_default();
     let suggestions = state
         .solves
         .solve(move || suggest(&session, &options, None).map_err(within_solve_request))
         .await??;
-    Ok(Json(TrialResponse { suggestions }))
+    Ok(Json(TrialAnswer {
+        suggestions,
+        conventions,
+    }))
+}
+
+/// The answer of `POST /api/v1/trial-weights`: the contract's `suggestions`
+/// and, added as a solution has it, the `conventions` every `angle_deg` is
+/// in (the session's).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct TrialAnswer {
+    pub suggestions: Vec<TrialSuggestion>,
+    /// The session's conventions, which every angle of the suggestions uses.
+    pub conventions: Conventions,
 }

@@ -2,7 +2,9 @@
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
 //! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
 //! against Clarabel's full program (tests/solve/minmax/equivalence.rs), with
-//! Clarabel again wherever that method's arithmetic fails.
+//! Clarabel again wherever that method's arithmetic fails. Where planes are
+//! undetermined or nearly so, min-max picks the least-mass optimum among the
+//! equally good ones (`least_mass`).
 //!
 //! The caller hands over the weighted problem `r = b + A x` (rows of `A` and `b`
 //! already multiplied by the row weights, method 3.3) in the internal frame; `solve_cone`
@@ -17,11 +19,14 @@ use super::model::Objective;
 
 mod active_set;
 mod kkt;
+mod least_mass;
 mod loose;
 mod primal_dual;
 mod program;
 mod soc;
 pub mod wiring;
+
+pub use least_mass::NEARLY_DEPENDENT;
 
 /// How min-max rows reach the cone solver.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -108,6 +113,34 @@ pub fn solve_cone_with(
     limits: Limits,
     strategy: Strategy,
 ) -> Result<ConeSolution, InputError> {
+    solve_cone_choosing(a, b, objective, max_abs, limits, strategy, false)
+}
+
+/// [`solve_cone`] that, for min-max, returns the optimum of least total
+/// squared mass where several are equally good (`least_mass`): for jobs with
+/// planes undetermined or nearly so (scaled condition number at least
+/// [`NEARLY_DEPENDENT`]), where the first optimum is an accident of the
+/// solver's path. Least squares is unchanged.
+pub fn solve_cone_least_mass(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    max_abs: &[Option<f64>],
+) -> Result<ConeSolution, InputError> {
+    let (limits, strategy) = (Limits::default(), Strategy::default());
+    solve_cone_choosing(a, b, objective, max_abs, limits, strategy, true)
+}
+
+/// The cone solve; `least_mass` asks min-max for the least-mass optimum.
+fn solve_cone_choosing(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    max_abs: &[Option<f64>],
+    limits: Limits,
+    strategy: Strategy,
+    least_mass: bool,
+) -> Result<ConeSolution, InputError> {
     check_input(a, b, max_abs)?;
     let planes = a.ncols();
     // Columns the sensors do not see cannot lower any residual: their best (and
@@ -156,7 +189,11 @@ pub fn solve_cone_with(
             program::solve_on(&a_s, &b_s, objective, bounds, &all, limits)
         }
     };
-    let (y, iterations, status) = loose::solve(&a_s, &b_s, &bounds, program)?;
+    let mut solved = loose::solve(&a_s, &b_s, &bounds, program)?;
+    if least_mass && objective == Objective::MinMax {
+        solved = least_mass::refine(&a_s, &b_s, &bounds, &d, solved, limits);
+    }
+    let (y, iterations, status) = solved;
     let mut x = DVector::zeros(planes);
     let mut bound_active = vec![false; planes];
     for (k, &j) in live.iter().enumerate() {

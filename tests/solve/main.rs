@@ -18,6 +18,7 @@ mod textbook;
 
 /// Min-max and mass-bounded corrections (issues 5 and 15).
 mod minmax {
+    mod dependent;
     mod equivalence;
     mod optimality;
     mod sessions;

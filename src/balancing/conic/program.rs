@@ -33,6 +33,24 @@ pub(super) fn solve_on(
     problem.solve(limits)
 }
 
+/// The scaled least-mass program of `least_mass`: `min ½‖c + M z‖²` subject
+/// to `|b_a + (A z)_a| ≤ caps[a]` on every row of `a`, `b`.
+pub(super) fn least_norm_capped(
+    m: &DMatrix<Complex64>,
+    c: &DVector<Complex64>,
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    caps: &[f64],
+    limits: Limits,
+) -> Result<(Vec<Complex64>, u32, String), InputError> {
+    let mut problem = Problem::new(m.ncols());
+    problem.least_squares(m.nrows(), |i, k| m[(i, k)], |i| c[i]);
+    for (row, &cap) in caps.iter().enumerate() {
+        problem.capped(&|k| a[(row, k)], b[row], cap);
+    }
+    problem.solve(limits)
+}
+
 /// Clarabel's standard form `min ½zᵀPz + qᵀz  s.t.  b − Az ∈ K`, assembled in
 /// triplets. Variables: `[Re y (n); Im y (n); extra]`, where `extra` is `t` for
 /// min-max and the stacked real residual `w` for least squares.
@@ -134,9 +152,15 @@ impl Problem {
 
     /// |y_k| ≤ m as the cone (m, Re y_k, Im y_k).
     fn bound(&mut self, k: usize, m: f64) {
-        self.push([], m);
-        self.push([(k, -1.0)], 0.0);
-        self.push([(self.n + k, -1.0)], 0.0);
+        let unit = |j| Complex64::new(if j == k { 1.0 } else { 0.0 }, 0.0);
+        self.capped(&unit, Complex64::new(0.0, 0.0), m);
+    }
+
+    /// `|c + Σ_k coef(k) y_k| ≤ cap` as the cone (cap, Re, Im).
+    fn capped(&mut self, coef: &dyn Fn(usize) -> Complex64, c: Complex64, cap: f64) {
+        self.push([], cap);
+        // No variable beside y: zero coefficients are left out.
+        self.push_residual(coef, c, [(0, 0.0), (0, 0.0)]);
         self.cones.push(SupportedConeT::SecondOrderConeT(3));
     }
 

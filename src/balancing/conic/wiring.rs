@@ -5,7 +5,7 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
-use super::solve_cone;
+use super::{solve_cone, solve_cone_least_mass, NEARLY_DEPENDENT};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, Session, SolveOptions};
 use crate::balancing::solution::Warning;
@@ -38,6 +38,8 @@ pub fn check_mass_bounds(options: &SolveOptions, session: &Session) -> Result<()
 /// bound on a plane being solved for), with a warning per binding bound; `None`
 /// when plain least squares is the answer. `a`, `b` are the weighted problem
 /// (3.3) on `planes` (indices into `session.planes`); the masses are grams.
+/// `condition` is `A`'s scaled condition number (the solve's `Factored`):
+/// from [`NEARLY_DEPENDENT`] on, min-max picks the least-mass optimum.
 #[allow(clippy::type_complexity)]
 pub fn correction(
     a: &DMatrix<Complex64>,
@@ -45,6 +47,7 @@ pub fn correction(
     options: &SolveOptions,
     session: &Session,
     planes: &[usize],
+    condition: f64,
 ) -> Result<Option<(DVector<Complex64>, Vec<Warning>)>, InputError> {
     check_mass_bounds(options, session)?;
     let limits = options.max_mass_g.as_ref();
@@ -68,7 +71,11 @@ pub fn correction(
             return Ok(Some((x, Vec::new())));
         }
     }
-    let solved = solve_cone(a, b, objective, &bounds)?;
+    let solved = if condition >= NEARLY_DEPENDENT {
+        solve_cone_least_mass(a, b, objective, &bounds)?
+    } else {
+        solve_cone(a, b, objective, &bounds)?
+    };
     let what = match objective {
         Objective::LeastSquares => "least-squares",
         Objective::MinMax => "min-max",

@@ -94,8 +94,9 @@ fn correction(
     planes: &[usize],
 ) -> Result<(DVector<Complex64>, Vec<Warning>), InputError> {
     // Min-max and mass bounds are cone programs (method 4.1).
+    let condition = factor.condition_number();
     if let Some(found) =
-        crate::balancing::conic::wiring::correction(a, b, options, session, planes)?
+        crate::balancing::conic::wiring::correction(a, b, options, session, planes, condition)?
     {
         return Ok(found);
     }

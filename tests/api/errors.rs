@@ -63,6 +63,8 @@ fn cases() -> Vec<Case> {
         c("NaN as a string", "POST", sessions, JSON, with(|s| s["runs"][1]["readings"][0]["phase_deg"] = json!("NaN")), 422, "invalid_type", Some("runs[1].readings[0].phase_deg")),
         c("number beyond f64", "POST", sessions, JSON, Body::Raw(session().to_string().replacen("\"amplitude\":", "\"amplitude\":1e400,\"x\":", 1).into_bytes()), 400, "malformed_json", Some("runs[0].readings[0].amplitude")),
         c("mass beyond f64 in a posted run", "POST", "/api/v1/sessions/{id}/runs", JSON, Body::Raw(run(1).to_string().replacen("\"mass_g\":30.0", "\"mass_g\":-1e999", 1).replacen("\"trial inboard\"", "\"new\"", 1).into_bytes()), 400, "malformed_json", Some("weights[0].mass_g")),
+        c("a key given twice", "POST", sessions, JSON, Body::Raw(session().to_string().replacen("\"name\":", "\"name\":\"a\",\"name\":", 1).into_bytes()), 422, "invalid_type", Some("name")),
+        c("a reading's key given twice", "POST", sessions, JSON, Body::Raw(session().to_string().replacen("\"phase_deg\":", "\"phase_deg\":1,\"phase_deg\":", 1).into_bytes()), 422, "invalid_type", Some("runs[0].readings[0].phase_deg")),
         c("huge amplitude", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][0]["amplitude"] = json!(1e300)), 422, "invalid_value", Some("runs[0].readings[0].amplitude")),
         c("negative amplitude", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][2]["amplitude"] = json!(-1.0)), 422, "invalid_value", Some("runs[0].readings[2].amplitude")),
         c("negative mass", "POST", sessions, JSON, with(|s| s["runs"][1]["weights"][0]["mass_g"] = json!(-30)), 422, "invalid_value", Some("runs[1].weights[0].mass_g")),

@@ -149,17 +149,22 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
             }
         }
         Category::Data => {
-            let (code, field) = match message.strip_prefix("missing field `") {
-                Some(rest) => {
-                    let name = rest.split('`').next().unwrap_or_default();
-                    let field = if path.is_empty() {
-                        name.to_string()
-                    } else {
-                        format!("{path}.{name}")
-                    };
-                    ("missing_field", field)
+            // serde names a missing or repeated key in its message; the path
+            // is that of the object holding it.
+            let named = |name: &str| {
+                if path.is_empty() {
+                    name.to_string()
+                } else {
+                    format!("{path}.{name}")
                 }
-                None => ("invalid_type", path),
+            };
+            let key = |rest: &str| rest.split('`').next().unwrap_or_default().to_string();
+            let (code, field) = if let Some(rest) = message.strip_prefix("missing field `") {
+                ("missing_field", named(&key(rest)))
+            } else if let Some(rest) = message.strip_prefix("duplicate field `") {
+                ("invalid_type", named(&key(rest)))
+            } else {
+                ("invalid_type", path)
             };
             InputError {
                 kind: ErrorKind::Invalid,

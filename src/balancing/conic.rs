@@ -100,39 +100,32 @@ pub fn solve_cone_within(
     max_abs: &[Option<f64>],
     limits: Limits,
 ) -> Result<ConeSolution, InputError> {
-    solve_cone_with(a, b, objective, max_abs, limits, Strategy::default())
+    solve_cone_with(a, b, objective, max_abs, limits, Strategy::default(), false)
+}
+
+/// [`solve_cone`] for a job whose `A` has the scaled condition number
+/// `condition` (columns at unit norm; the solve's one factorisation): from
+/// [`NEARLY_DEPENDENT`] on, where some plane is undetermined or nearly so and
+/// the first min-max optimum an accident of the solver's path, min-max
+/// returns the optimum of least total squared mass (`least_mass`). Least
+/// squares is unchanged.
+pub fn solve_cone_conditioned(
+    condition: f64,
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    objective: Objective,
+    max_abs: &[Option<f64>],
+) -> Result<ConeSolution, InputError> {
+    let least_mass = objective == Objective::MinMax && condition >= NEARLY_DEPENDENT;
+    let (limits, strategy) = (Limits::default(), Strategy::default());
+    solve_cone_with(a, b, objective, max_abs, limits, strategy, least_mass)
 }
 
 /// [`solve_cone_within`] with the min-max rows handled by `strategy`; both
 /// give the same answer to the solver's tolerance (tests/solve/minmax/equivalence.rs).
+/// `least_mass` asks min-max for the optimum of least total squared mass
+/// where several are equally good ([`solve_cone_conditioned`] says when).
 pub fn solve_cone_with(
-    a: &DMatrix<Complex64>,
-    b: &DVector<Complex64>,
-    objective: Objective,
-    max_abs: &[Option<f64>],
-    limits: Limits,
-    strategy: Strategy,
-) -> Result<ConeSolution, InputError> {
-    solve_cone_choosing(a, b, objective, max_abs, limits, strategy, false)
-}
-
-/// [`solve_cone`] that, for min-max, returns the optimum of least total
-/// squared mass where several are equally good (`least_mass`): for jobs with
-/// planes undetermined or nearly so (scaled condition number at least
-/// [`NEARLY_DEPENDENT`]), where the first optimum is an accident of the
-/// solver's path. Least squares is unchanged.
-pub fn solve_cone_least_mass(
-    a: &DMatrix<Complex64>,
-    b: &DVector<Complex64>,
-    objective: Objective,
-    max_abs: &[Option<f64>],
-) -> Result<ConeSolution, InputError> {
-    let (limits, strategy) = (Limits::default(), Strategy::default());
-    solve_cone_choosing(a, b, objective, max_abs, limits, strategy, true)
-}
-
-/// The cone solve; `least_mass` asks min-max for the least-mass optimum.
-fn solve_cone_choosing(
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
     objective: Objective,
@@ -190,7 +183,7 @@ fn solve_cone_choosing(
         }
     };
     let mut solved = loose::solve(&a_s, &b_s, &bounds, program)?;
-    if least_mass && objective == Objective::MinMax {
+    if least_mass {
         solved = least_mass::refine(&a_s, &b_s, &bounds, &d, solved, limits);
     }
     let (y, iterations, status) = solved;

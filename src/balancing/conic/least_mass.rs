@@ -182,7 +182,7 @@ fn lost_combinations(a: &DMatrix<Complex64>) -> DMatrix<Complex64> {
 
 #[cfg(test)]
 mod tests {
-    use crate::balancing::conic::{objective_value, solve_cone, solve_cone_least_mass};
+    use crate::balancing::conic::{objective_value, solve_cone, solve_cone_conditioned};
     use crate::balancing::model::Objective;
     use nalgebra::{DMatrix, DVector};
     use num_complex::Complex64;
@@ -217,7 +217,7 @@ mod tests {
         let free = solve_cone(&a, &b, Objective::MinMax, &[None, None]).unwrap();
         let sum = free.x[0] + free.x[1];
         for bounds in [[Some(1e5), None], [None, Some(1e5)], [Some(1e5), Some(1e5)]] {
-            let got = solve_cone_least_mass(&a, &b, Objective::MinMax, &bounds).unwrap();
+            let got = solve_cone_conditioned(1e16, &a, &b, Objective::MinMax, &bounds).unwrap();
             // The same peak (at most 4e-8 of max|b| above, ~6e-8 of the peak) ...
             assert!(got.value <= free.value * (1.0 + 1e-7), "{bounds:?}");
             // ... and the least-mass split, half each, of the same sum: to
@@ -240,7 +240,8 @@ mod tests {
         let free = solve_cone(&a, &b, Objective::MinMax, &[None, None]).unwrap();
         let sum = free.x[0] + free.x[1];
         let m = sum.norm() / 4.0;
-        let got = solve_cone_least_mass(&a, &b, Objective::MinMax, &[Some(m), None]).unwrap();
+        let got =
+            solve_cone_conditioned(1e16, &a, &b, Objective::MinMax, &[Some(m), None]).unwrap();
         let peak = objective_value(&a, &b, &got.x, Objective::MinMax);
         assert!(
             peak <= free.value * (1.0 + 1e-7),

@@ -5,7 +5,7 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
-use super::{solve_cone, solve_cone_least_mass, NEARLY_DEPENDENT};
+use super::solve_cone_conditioned;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, Session, SolveOptions};
 use crate::balancing::solution::Warning;
@@ -39,7 +39,7 @@ pub fn check_mass_bounds(options: &SolveOptions, session: &Session) -> Result<()
 /// when plain least squares is the answer. `a`, `b` are the weighted problem
 /// (3.3) on `planes` (indices into `session.planes`); the masses are grams.
 /// `condition` is `A`'s scaled condition number (the solve's `Factored`):
-/// from [`NEARLY_DEPENDENT`] on, min-max picks the least-mass optimum.
+/// from [`super::NEARLY_DEPENDENT`] on, min-max picks the least-mass optimum.
 #[allow(clippy::type_complexity)]
 pub fn correction(
     a: &DMatrix<Complex64>,
@@ -71,11 +71,7 @@ pub fn correction(
             return Ok(Some((x, Vec::new())));
         }
     }
-    let solved = if condition >= NEARLY_DEPENDENT {
-        solve_cone_least_mass(a, b, objective, &bounds)?
-    } else {
-        solve_cone(a, b, objective, &bounds)?
-    };
+    let solved = solve_cone_conditioned(condition, a, b, objective, &bounds)?;
     let what = match objective {
         Objective::LeastSquares => "least-squares",
         Objective::MinMax => "min-max",

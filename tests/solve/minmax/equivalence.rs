@@ -46,6 +46,7 @@ fn the_active_set_answer_equals_the_full_programs_on_many_random_jobs() {
                 &free,
                 Limits::default(),
                 Strategy::Full,
+                false,
             )
             .unwrap();
             let bounded: Vec<Option<f64>> = (0..planes)
@@ -59,6 +60,7 @@ fn the_active_set_answer_equals_the_full_programs_on_many_random_jobs() {
                     bounds,
                     Limits::default(),
                     Strategy::Full,
+                    false,
                 )
                 .unwrap();
                 let act = solve_cone_with(
@@ -68,6 +70,7 @@ fn the_active_set_answer_equals_the_full_programs_on_many_random_jobs() {
                     bounds,
                     Limits::default(),
                     Strategy::ActiveSet,
+                    false,
                 )
                 .unwrap();
                 let scale = max_abs(&b);
@@ -125,6 +128,7 @@ fn a_large_active_set_solve_cut_off_by_its_limits_is_a_422_not_a_hang() {
             &free,
             limits,
             Strategy::ActiveSet,
+            false,
         )
         .unwrap_err();
         assert_eq!(err.code, "solver_failed", "{limits:?}: {}", err.message);

@@ -58,6 +58,29 @@ async fn structs_posted_as_positional_arrays_are_refused_naming_the_field() {
     }
 }
 
+#[tokio::test]
+async fn a_null_or_a_number_where_an_object_belongs_is_not_called_an_array() {
+    let (_dir, server, client) = fresh_server().await;
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    for (body, field) in [
+        (
+            json!({"session": session, "options": null}),
+            Some("options"),
+        ),
+        (json!({"session": session, "options": 5}), Some("options")),
+        (json!(null), None),
+    ] {
+        let (status, _, answer) = post(&client, &server.url("/api/v1/solve"), &body).await;
+        assert_eq!(status, 422, "{answer}");
+        assert_eq!(answer["error"]["field"].as_str(), field, "{answer}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(
+            message.ends_with("expected a JSON object") && !message.contains("array"),
+            "{message}"
+        );
+    }
+}
+
 /// Every number in `v`, with its path; panics on a null where a number was.
 #[tokio::test]
 async fn every_request_type_refuses_a_positional_array() {

@@ -159,6 +159,15 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
                 }
             };
             let key = |rest: &str| rest.split('`').next().unwrap_or_default().to_string();
+            // A wire struct's visitor expects "a JSON object, not an array",
+            // which reads wrongly when a null or a number was given.
+            let message = match message.strip_suffix(crate::balancing::wire::NOT_AN_OBJECT) {
+                Some(head) if !message.starts_with("invalid type: sequence") => {
+                    format!("{head}a JSON object")
+                }
+                _ => message.to_string(),
+            };
+            let message = message.as_str();
             let (code, field) = if let Some(rest) = message.strip_prefix("missing field `") {
                 ("missing_field", named(&key(rest)))
             } else if let Some(rest) = message.strip_prefix("duplicate field `") {

@@ -81,6 +81,15 @@ fn measured(round: bool, dofs: &[usize]) -> Vec<Mode> {
         .collect()
 }
 
+/// The chain's masses, known: a fixed diagonal mass matrix.
+fn masses_known() -> MatrixFamily {
+    let m0 = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&MASSES));
+    MatrixFamily {
+        fixed: rows(&m0),
+        parameters: vec![],
+    }
+}
+
 fn stiffness_unknown() -> MatrixFamily {
     MatrixFamily {
         fixed: vec![vec![0.0; 3]; 3],
@@ -97,12 +106,8 @@ fn rel(got: &[f64], want: &[f64]) -> f64 {
 
 #[test]
 fn stiffnesses_from_eigenpairs_rounded_to_three_digits_are_off_by_about_the_rounding() {
-    let m0 = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&MASSES));
     let req = ModelRequest {
-        mass: MatrixFamily {
-            fixed: rows(&m0),
-            parameters: vec![],
-        },
+        mass: masses_known(),
         stiffness: stiffness_unknown(),
         modes: measured(true, &[0, 1, 2]),
         initial: None,
@@ -160,12 +165,8 @@ fn masses_and_stiffnesses_together_come_from_mass_normalised_rounded_shapes() {
 
 #[test]
 fn shapes_measured_at_two_of_three_masses_are_completed_by_iteration() {
-    let m0 = DMatrix::from_diagonal(&nalgebra::DVector::from_row_slice(&MASSES));
     let req = ModelRequest {
-        mass: MatrixFamily {
-            fixed: rows(&m0),
-            parameters: vec![],
-        },
+        mass: masses_known(),
         stiffness: stiffness_unknown(),
         modes: measured(false, &[0, 1]),
         initial: Some(Initial {

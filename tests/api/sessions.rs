@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{example, fresh_server, post, send, start_server, SOLVABLE_EXAMPLES};
+use common::{example, fresh_server, path_segment, post, send, start_server, SOLVABLE_EXAMPLES};
 use fieldbal::balancing::model::Session;
 use serde_json::{json, Value};
 
@@ -112,7 +112,7 @@ async fn sessions_runs_versions_and_solutions_survive_a_restart_on_the_same_file
         .clone();
     let run_url = format!(
         "/api/v1/sessions/{id}/runs/{}",
-        urlencode(run["id"].as_str().unwrap())
+        path_segment(run["id"].as_str().unwrap())
     );
     let (status, _, body) = send(client.put(server.url(&run_url)).json(&run)).await;
     assert_eq!((status, &body["version"]), (200, &json!(2)), "{body}");
@@ -204,15 +204,4 @@ async fn fifty_concurrent_posts_are_all_stored_and_listed() {
         .collect();
     assert_eq!(paged, all);
     server.shutdown().await;
-}
-
-fn urlencode(s: &str) -> String {
-    s.bytes()
-        .map(|b| match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => {
-                (b as char).to_string()
-            }
-            _ => format!("%{b:02X}"),
-        })
-        .collect()
 }

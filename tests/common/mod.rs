@@ -153,6 +153,19 @@ pub fn assert_matches_expected(
     }
 }
 
+/// Percent-encode all but the unreserved characters (RFC 3986), so that an
+/// odd id (spaces, slashes) stays one path segment.
+pub fn path_segment(s: &str) -> String {
+    s.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => {
+                (b as char).to_string()
+            }
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
+}
+
 /// POST a JSON value; returns status, headers and the parsed body (Null if empty).
 pub async fn post(
     client: &reqwest::Client,

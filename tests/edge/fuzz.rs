@@ -14,7 +14,7 @@ use reqwest::header::CONTENT_TYPE;
 use reqwest::Method;
 use serde_json::{json, Value};
 
-use common::{example, post, send, start_server};
+use common::{example, path_segment, post, send, start_server};
 use support::schema::{mutate, Schemas};
 
 const REQUESTS: usize = 2000;
@@ -40,18 +40,6 @@ fn operations(doc: &Value) -> Vec<Operation> {
         }
     }
     ops
-}
-
-/// Percent-encode everything but unreserved characters, so odd ids stay one segment.
-fn encode(s: &str) -> String {
-    s.bytes()
-        .map(|b| match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => {
-                (b as char).to_string()
-            }
-            _ => format!("%{b:02X}"),
-        })
-        .collect()
 }
 
 fn odd_id(rng: &mut StdRng) -> String {
@@ -213,7 +201,7 @@ async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
             .path
             .replace(
                 "{id}",
-                &encode(&if !real {
+                &path_segment(&if !real {
                     odd_id(&mut rng)
                 } else if op.path.starts_with("/api/v1/machines/") {
                     MACHINE.to_string()
@@ -223,7 +211,7 @@ async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
             )
             .replace(
                 "{run_id}",
-                &encode(&if rng.gen_bool(0.8) {
+                &path_segment(&if rng.gen_bool(0.8) {
                     run_id.clone()
                 } else {
                     odd_id(&mut rng)

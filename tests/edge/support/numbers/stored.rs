@@ -11,7 +11,7 @@ use serde_json::json;
 
 use super::stateless::{coefficients, reference_only, rich_session};
 use super::{mutate, Job};
-use crate::common::post;
+use crate::common::{path_segment, post};
 
 const MACHINE: &str = "NUMBERS-M";
 
@@ -102,7 +102,10 @@ pub(super) async fn sweep(job: &Job<'_>, rng: &mut StdRng, requests: usize) -> V
                     .await;
             }
         } else if kind == options.len() + 1 {
-            let path = format!("/api/v1/sessions/{session}/runs/{}", encode(&replaced_id));
+            let path = format!(
+                "/api/v1/sessions/{session}/runs/{}",
+                path_segment(&replaced_id)
+            );
             if job.send(true, &path, &mutate(&replaced, rng)).await.0 {
                 ok[kind] += 1;
                 let discrete = json!({"discrete": true, "fit_time_limit_ms": 20});
@@ -126,9 +129,4 @@ pub(super) async fn sweep(job: &Job<'_>, rng: &mut StdRng, requests: usize) -> V
         }
     }
     ok
-}
-
-/// A run id as one path segment.
-fn encode(id: &str) -> String {
-    id.replace(' ', "%20")
 }

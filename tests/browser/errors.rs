@@ -3,7 +3,7 @@
 //! server is shown at the field its `error.field` names.
 
 use crate::harness::form::{self, field, type_into, type_setup};
-use crate::harness::stand::{example_session, Stand};
+use crate::harness::stand::{example_session, get, stored_session_id, Stand};
 use fantoccini::Locator;
 use serde_json::{json, Value};
 
@@ -37,12 +37,7 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field(s
     b.click("#step-runs button.store").await;
     let banner = b.text("#step-runs .banner.error").await;
     assert!(banner.contains("Nothing was sent"), "{banner}");
-    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let list = get(stand, "/api/v1/sessions").await;
     assert_eq!(list["total"], json!(0), "nothing may be stored: {list}");
     // A decimal comma is a number.
     type_into(b, &cell, "330,4").await;
@@ -81,13 +76,7 @@ async fn a_bad_number_is_marked_before_sending_and_a_server_error_at_its_field(s
         .await
         .unwrap();
     b.wait_for("#step-runs button.add-trial").await;
-    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
-    let id = list["sessions"][0]["id"].as_str().unwrap().to_string();
+    let id = stored_session_id(stand).await;
     let mut taken = session["runs"][1].clone();
     taken["id"] = json!("trial 1");
     let resp = reqwest::Client::new()
@@ -184,21 +173,12 @@ async fn a_mistyped_run_is_corrected_in_place_and_stored_as_a_new_version(stand:
     type_into(b, &cell, &right).await;
     form::store(b).await;
 
-    let list: Value = reqwest::get(stand.server.url("/api/v1/sessions"))
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
-    let id = list["sessions"][0]["id"].as_str().unwrap().to_string();
-    let versions: Value = reqwest::get(stand.server.url(&format!(
-        "/api/v1/sessions/{id}/runs/trial%20inboard/versions"
-    )))
-    .await
-    .unwrap()
-    .json()
-    .await
-    .unwrap();
+    let id = stored_session_id(stand).await;
+    let versions = get(
+        stand,
+        &format!("/api/v1/sessions/{id}/runs/trial%20inboard/versions"),
+    )
+    .await;
     assert_eq!(versions.as_array().map(Vec::len), Some(2), "{versions}");
     assert_eq!(versions[1]["current"], json!(true));
     assert_eq!(

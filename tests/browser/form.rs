@@ -5,7 +5,7 @@
 //! to `target/screenshots/`.
 
 use crate::harness::form::{self, field, type_run, type_setup, value_of};
-use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::stand::{example_session, get, post, stored_session_id, Stand};
 use crate::harness::Browser;
 use fantoccini::Locator;
 use serde_json::{json, Value};
@@ -234,18 +234,8 @@ async fn a_trial_weight_left_in_place_is_carried_into_the_next_run_by_one_tick(s
         type_run(b, &session, k, true).await;
     }
     // The stored run lists both weights although only the second was typed.
-    let stored = stand.server.url("/api/v1/sessions");
-    let list: Value = reqwest::get(&stored).await.unwrap().json().await.unwrap();
-    let id = list["sessions"][0]["id"]
-        .as_str()
-        .expect("a stored session")
-        .to_string();
-    let got: Value = reqwest::get(format!("{stored}/{id}"))
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let id = stored_session_id(stand).await;
+    let got = get(stand, &format!("/api/v1/sessions/{id}")).await;
     assert_eq!(got["runs"][2]["weights"], session["runs"][2]["weights"]);
     solve_and_compare(b, &expected).await;
 }

@@ -13,7 +13,7 @@
 
 use crate::harness::form::{self, field, type_into, type_run, type_setup, value_of};
 use crate::harness::job::{message_for, predicted, scroll_to, shots};
-use crate::harness::stand::{example_session, Stand};
+use crate::harness::stand::{example_session, get, Stand};
 use crate::harness::steps::{
     a_plane_the_trim_leaves_shows_nothing_to_add, fits_a_tablet,
     grid_header_and_actions_are_sticky, js, named, service_trim, solve, stored_id,
@@ -24,7 +24,7 @@ use crate::scenes::{
     machine_page_and_trim_from_stored_coefficients, multi_speed_job_shows_bode_plots,
     the_form_weighs_little_and_asks_nothing_of_other_hosts,
 };
-use serde_json::{json, Value};
+use serde_json::json;
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
@@ -313,14 +313,11 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
         "1075"
     );
     shots(b, "job-two-tabs").await;
-    let versions: Value = reqwest::get(stand.server.url(&format!(
-        "/api/v1/sessions/{id}/runs/trial%20inboard/versions"
-    )))
-    .await
-    .unwrap()
-    .json()
-    .await
-    .unwrap();
+    let versions = get(
+        &stand,
+        &format!("/api/v1/sessions/{id}/runs/trial%20inboard/versions"),
+    )
+    .await;
     let versions = versions.get("versions").cloned().unwrap_or(versions);
     assert_eq!(
         versions.as_array().map(Vec::len),

@@ -84,6 +84,15 @@ pub async fn get(stand: &Stand, path: &str) -> Value {
         .unwrap()
 }
 
+/// The id of the first session the service lists (the one a test stored).
+pub async fn stored_session_id(stand: &Stand) -> String {
+    let list = get(stand, "/api/v1/sessions").await;
+    list["sessions"][0]["id"]
+        .as_str()
+        .unwrap_or_else(|| panic!("a stored session: {list}"))
+        .to_string()
+}
+
 /// The session and the expected answer of a public example.
 pub fn example_session(name: &str) -> (Value, Value) {
     let example = crate::common::example(name);

@@ -15,7 +15,7 @@ use serde_json::{json, Value};
 
 use crate::harness::form::{self, field, type_into, value_of};
 use crate::harness::job::{scroll_to, shots};
-use crate::harness::stand::{example_session, Stand};
+use crate::harness::stand::{example_session, post, Stand};
 use crate::harness::steps::{fits_a_tablet, js};
 
 /// (b, i) The machine page, coefficients pooled, a trim job with only a zero run read from CSV.
@@ -111,15 +111,7 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     let b = &stand.browser;
     let example = crate::common::example("compressor-multispeed-noisy.json");
     let session = &example["session"];
-    let created: Value = reqwest::Client::new()
-        .post(stand.server.url("/api/v1/sessions"))
-        .json(session)
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let created = post(stand, "/api/v1/sessions", session.clone()).await;
     let id = created["id"].as_str().unwrap();
     b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
         .await;

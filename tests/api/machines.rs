@@ -387,7 +387,7 @@ async fn a_new_job_with_only_its_reference_run_is_trimmed_from_the_machines_stor
     }
     for (query, status, field) in [
         ("?version=99", 404, Some("version")),
-        ("?version=x", 400, None),
+        ("?version=x", 400, Some("version")),
     ] {
         let (got, _, err) = send(client.get(format!("{url}{query}"))).await;
         assert_eq!((got, error_of(&err).1), (status, field), "{query}: {err}");

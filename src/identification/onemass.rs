@@ -172,6 +172,18 @@ pub fn fit(setup: &Setup, points: &[Point]) -> Result<Fit, InputError> {
 mod tests {
     use super::*;
 
+    /// A 40 kg mass at 100 rad/s with 10 % damping, unit unbalance.
+    fn truth() -> Fit {
+        Fit {
+            c: 4e5,
+            b: 800.0,
+            q: 0.0,
+            kappa: 0.0,
+            m: 40.0,
+            u: Complex64::new(1.0, 0.0),
+        }
+    }
+
     fn points(truth: &Fit, ws: &[f64], turn: f64) -> Vec<Point> {
         ws.iter()
             .map(|&w| Point {
@@ -183,14 +195,7 @@ mod tests {
 
     #[test]
     fn every_setup_gives_back_an_exact_model() {
-        let truth = Fit {
-            c: 4e5,
-            b: 800.0,
-            q: 0.0,
-            kappa: 0.0,
-            m: 40.0,
-            u: Complex64::new(1.0, 0.0),
-        };
+        let truth = truth();
         let ws = [60.0, 80.0, 95.0, 100.0, 105.0, 120.0, 150.0];
         for mass in [None, Some(40.0)] {
             for at_weight in [true, false] {
@@ -210,14 +215,7 @@ mod tests {
 
     #[test]
     fn a_turned_sensor_is_fitted_exactly_when_the_forcing_angle_is_estimated() {
-        let truth = Fit {
-            c: 4e5,
-            b: 800.0,
-            q: 0.0,
-            kappa: 0.0,
-            m: 40.0,
-            u: Complex64::new(1.0, 0.0),
-        };
+        let truth = truth();
         let setup = Setup {
             mass: None,
             forcing_at_weight: false,

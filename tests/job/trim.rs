@@ -5,6 +5,7 @@
 use crate::support;
 
 use fieldbal::balancing::model::Conventions;
+use fieldbal::balancing::solution::RunCheck;
 use fieldbal::balancing::Solution;
 use num_complex::Complex64;
 use serde_json::{json, Value};
@@ -31,6 +32,20 @@ fn job(conv: Conventions, noise: &mut Noise, typo: f64) -> (Value, Solution, Wei
     let fit = fitted(conv, &one_shot);
     runs.push(run(&rotor, conv, "check", &fit, &fit, noise, &NO_RUNOUT));
     (session(conv, runs), one_shot, fit)
+}
+
+/// The trim from the check run, and that run's check.
+fn trim_from_the_check_run(s: &Value) -> (Solution, RunCheck) {
+    let sol = solve_json(s, json!({"from_run": "check"}));
+    let check = sol
+        .run_checks
+        .as_ref()
+        .expect("run checks")
+        .iter()
+        .find(|c| c.run == "check")
+        .expect("check run checked")
+        .clone();
+    (sol, check)
 }
 
 fn close(a: Complex64, b: Complex64, rel: f64) -> bool {
@@ -118,12 +133,7 @@ fn a_trim_from_a_rotor_already_at_the_optimum_adds_nothing() {
 fn the_check_run_is_consistent_when_the_readings_differ_by_noise_only() {
     for seed in 1..=5 {
         let (s, _, _) = job(Conventions::default(), &mut Noise::new(1.0, 1.0, seed), 0.0);
-        let sol = solve_json(&s, json!({"from_run": "check"}));
-        let checks = sol.run_checks.as_ref().expect("run checks");
-        let check = checks
-            .iter()
-            .find(|c| c.run == "check")
-            .expect("check run checked");
+        let (sol, check) = trim_from_the_check_run(&s);
         assert!(check.consistent, "seed {seed}: {check:?}");
         assert_eq!(check.rows.len(), 4);
         assert!(
@@ -142,12 +152,7 @@ fn a_trial_angle_typed_90_degrees_off_makes_the_check_run_inconsistent() {
             &mut Noise::new(1.0, 1.0, seed),
             90.0,
         );
-        let sol = solve_json(&s, json!({"from_run": "check"}));
-        let checks = sol.run_checks.as_ref().expect("run checks");
-        let check = checks
-            .iter()
-            .find(|c| c.run == "check")
-            .expect("check run checked");
+        let (sol, check) = trim_from_the_check_run(&s);
         assert!(!check.consistent, "seed {seed}: {check:?}");
         let warned = sol
             .warnings

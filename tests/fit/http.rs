@@ -22,6 +22,15 @@ fn session() -> Value {
     )
 }
 
+/// `body` posted to `/api/v1/trial-weights`: status, headers and answer.
+async fn trial_weights(
+    client: &reqwest::Client,
+    server: &common::Server,
+    body: &Value,
+) -> (u16, reqwest::header::HeaderMap, Value) {
+    post(client, &server.url("/api/v1/trial-weights"), body).await
+}
+
 /// `session` with `edit` applied.
 fn with(edit: impl Fn(&mut Value)) -> Value {
     let mut s = session();
@@ -33,21 +42,16 @@ fn with(edit: impl Fn(&mut Value)) -> Value {
 async fn trial_weights_are_suggested_for_a_session_with_only_its_reference_run() {
     let (_dir, server, client) = fresh_server().await;
     let s = with(|s| s["runs"].as_array_mut().unwrap().truncate(1));
-    let (status, _, body) = post(
-        &client,
-        &server.url("/api/v1/trial-weights"),
-        &json!({"session": s}),
-    )
-    .await;
+    let (status, _, body) = trial_weights(&client, &server, &json!({"session": s})).await;
     assert_eq!(status, 200, "{body}");
     let sugs = body["suggestions"].as_array().unwrap();
     assert_eq!(sugs.len(), 2);
     assert!(sugs.iter().all(|x| x["basis"] == "rotor"
         && x["radius_mm"] == 300.0
         && x["mass_g"].as_f64().unwrap() > 0.0));
-    let (status, _, body) = post(
+    let (status, _, body) = trial_weights(
         &client,
-        &server.url("/api/v1/trial-weights"),
+        &server,
         &json!({"session": session(), "options": {"planes": ["P1"]}}),
     )
     .await;
@@ -67,20 +71,10 @@ async fn trial_weights_say_the_conventions_their_angles_are_in() {
     let (_dir, server, client) = fresh_server().await;
     let conventions = json!({"phase": "lead", "angle_direction": "with_rotation"});
     let s = with(|s| s["conventions"] = conventions.clone());
-    let (status, _, body) = post(
-        &client,
-        &server.url("/api/v1/trial-weights"),
-        &json!({"session": s}),
-    )
-    .await;
+    let (status, _, body) = trial_weights(&client, &server, &json!({"session": s})).await;
     assert_eq!(status, 200, "{body}");
     assert_eq!(body["conventions"], conventions, "{body}");
-    let (_, _, body) = post(
-        &client,
-        &server.url("/api/v1/trial-weights"),
-        &json!({"session": session()}),
-    )
-    .await;
+    let (_, _, body) = trial_weights(&client, &server, &json!({"session": session()})).await;
     assert_eq!(
         body["conventions"],
         json!({"phase": "lag", "angle_direction": "against_rotation"}),
@@ -257,12 +251,8 @@ async fn bad_places_kits_and_fit_options_are_named_by_field() {
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");
-    let (status, _, body) = post(
-        &client,
-        &server.url("/api/v1/trial-weights"),
-        &json!({"session": session(), "extra": 1}),
-    )
-    .await;
+    let (status, _, body) =
+        trial_weights(&client, &server, &json!({"session": session(), "extra": 1})).await;
     assert_eq!(
         (status, body["error"]["field"].as_str()),
         (400, Some("extra"))

@@ -6,7 +6,7 @@
 use crate::common;
 use crate::job_support;
 
-use common::{fresh_server, post, send};
+use common::{fresh_server, post, send, store_solution};
 use fieldbal::balancing::model::Conventions;
 use fieldbal::balancing::phasor::{angle_diff_deg, weight_out};
 use job_support::*;
@@ -165,13 +165,7 @@ async fn a_new_job_with_only_its_reference_run_is_trimmed_from_the_machines_stor
     let s1 = store(&client, &server, &job_session(&rotor, "ID-FAN-3", true, 31)).await;
     let s2 = store(&client, &server, &job_session(&rotor, "ID-FAN-3", true, 32)).await;
     let other = store(&client, &server, &job_session(&rotor, "OTHER", true, 33)).await;
-    let (status, _, solved) = post(
-        &client,
-        &server.url(&format!("/api/v1/sessions/{s1}/solutions")),
-        &json!({}),
-    )
-    .await;
-    assert_eq!(status, 201, "{solved}");
+    let solved = store_solution(&client, &server, &s1).await;
 
     let (status, _, m) = send(client.get(server.url("/api/v1/machines/ID-FAN-3"))).await;
     assert_eq!(status, 200);

@@ -4,7 +4,10 @@
 
 use crate::common;
 
-use common::{example, fresh_server, path_segment, post, send, start_server, SOLVABLE_EXAMPLES};
+use common::{
+    example, fresh_server, path_segment, post, send, start_server, store_solution,
+    SOLVABLE_EXAMPLES,
+};
 use fieldbal::balancing::model::Session;
 use serde_json::{json, Value};
 
@@ -116,13 +119,7 @@ async fn sessions_runs_versions_and_solutions_survive_a_restart_on_the_same_file
     );
     let (status, _, body) = send(client.put(server.url(&run_url)).json(&run)).await;
     assert_eq!((status, &body["version"]), (200, &json!(2)), "{body}");
-    let (status, _, stored) = post(
-        &client,
-        &server.url(&format!("/api/v1/sessions/{id}/solutions")),
-        &json!({}),
-    )
-    .await;
-    assert_eq!(status, 201, "{stored}");
+    let stored = store_solution(&client, &server, &id).await;
     server.shutdown().await;
 
     let (_, server) = start_server(&db).await;

@@ -154,7 +154,9 @@ pub fn assert_matches_expected(
 }
 
 /// Percent-encode all but the unreserved characters (RFC 3986), so that an
-/// odd id (spaces, slashes) stays one path segment.
+/// odd id (spaces, slashes) stays one path segment. Written apart from the
+/// service's own encoder (`http::store::runs`) on purpose: a test's URL
+/// should not depend on the code under test.
 pub fn path_segment(s: &str) -> String {
     s.bytes()
         .map(|b| match b {
@@ -164,6 +166,19 @@ pub fn path_segment(s: &str) -> String {
             _ => format!("%{b:02X}"),
         })
         .collect()
+}
+
+/// Solve a stored session (POST `{}` to its solutions); asserts 201 and
+/// returns the stored solution's body.
+pub async fn store_solution(
+    client: &reqwest::Client,
+    server: &Server,
+    session_id: &str,
+) -> serde_json::Value {
+    let url = server.url(&format!("/api/v1/sessions/{session_id}/solutions"));
+    let (status, _, body) = post(client, &url, &serde_json::json!({})).await;
+    assert_eq!(status, 201, "{body}");
+    body
 }
 
 /// POST a JSON value; returns status, headers and the parsed body (Null if empty).

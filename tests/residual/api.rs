@@ -4,7 +4,7 @@
 use crate::common;
 use crate::support;
 
-use common::{example, post, start_server};
+use common::{example, post, start_server, store_solution};
 use fieldbal::balancing::acceptance::check;
 use fieldbal::balancing::model::Conventions;
 use serde_json::{json, Value};
@@ -97,13 +97,7 @@ async fn a_stored_session_with_a_rotor_ends_with_an_iso_verdict_per_plane() {
     let (status, _, stored) = post(&client, &server.url("/api/v1/sessions"), &session).await;
     assert_eq!(status, 201, "{stored}");
     let id = stored["id"].as_str().unwrap();
-    let (status, _, sol) = post(
-        &client,
-        &server.url(&format!("/api/v1/sessions/{id}/solutions")),
-        &json!({}),
-    )
-    .await;
-    assert_eq!(status, 201, "{sol}");
+    let sol = store_solution(&client, &server, id).await;
     let iso = &sol["solution"]["iso_21940"];
     let share = iso["permissible_per_plane_gmm"].as_f64().unwrap();
     let planes = iso["planes"].as_array().unwrap_or_else(|| panic!("{iso}"));

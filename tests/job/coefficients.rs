@@ -124,27 +124,18 @@ fn parsed(v: &Value) -> Session {
     serde_json::from_value(v.clone()).unwrap()
 }
 
+/// `(id, session)` of a job on `rotor` with trials, 1 % / 1° noise from `seed`.
+fn noisy(id: &str, rotor: &Rotor, conv: Conventions, seed: u64) -> (String, Session) {
+    let runs = runs(rotor, conv, true, &mut Noise::new(1.0, 1.0, seed));
+    (id.to_string(), parsed(&session(conv, runs)))
+}
+
 #[test]
 fn two_sessions_pool_into_coefficients_that_give_the_exact_correction_within_their_uncertainty() {
     let rotor = Rotor::new();
     let best = rotor.optimum();
     for conv in [Conventions::default(), Conventions::ALL[3]] {
-        let sessions = vec![
-            (
-                "s1".to_string(),
-                parsed(&session(
-                    conv,
-                    runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 11)),
-                )),
-            ),
-            (
-                "s2".to_string(),
-                parsed(&session(
-                    conv,
-                    runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 12)),
-                )),
-            ),
-        ];
+        let sessions = vec![noisy("s1", &rotor, conv, 11), noisy("s2", &rotor, conv, 12)];
         let pooled = pool(&sessions, &PoolOptions::default()).expect("pools");
         assert!(pooled.warnings.is_empty(), "{:?}", pooled.warnings);
         assert_eq!(pooled.sessions, ["s1", "s2"]);
@@ -184,32 +175,9 @@ fn a_session_whose_rotor_changed_is_named_and_left_out_on_request() {
     let rotor = Rotor::new();
     let conv = Conventions::default();
     let sessions = vec![
-        (
-            "s1".to_string(),
-            parsed(&session(
-                conv,
-                runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 21)),
-            )),
-        ),
-        (
-            "s2".to_string(),
-            parsed(&session(
-                conv,
-                runs(&rotor, conv, true, &mut Noise::new(1.0, 1.0, 22)),
-            )),
-        ),
-        (
-            "changed".to_string(),
-            parsed(&session(
-                conv,
-                runs(
-                    &rotor.scaled(1.3),
-                    conv,
-                    true,
-                    &mut Noise::new(1.0, 1.0, 23),
-                ),
-            )),
-        ),
+        noisy("s1", &rotor, conv, 21),
+        noisy("s2", &rotor, conv, 22),
+        noisy("changed", &rotor.scaled(1.3), conv, 23),
     ];
     let pooled = pool(&sessions, &PoolOptions::default()).expect("pools");
     let w = pooled

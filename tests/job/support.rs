@@ -5,6 +5,7 @@
 
 use fieldbal::balancing::model::{Conventions, SolveOptions};
 use fieldbal::balancing::phasor::{reading_in, reading_out, weight_in, weight_out};
+use fieldbal::balancing::solution::Correction;
 use fieldbal::balancing::{solve, Session, Solution};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
@@ -191,24 +192,26 @@ pub fn solve_json(session: &Value, options: Value) -> Solution {
     solve(&s, &o).unwrap_or_else(|e| panic!("solve failed: {e:?}"))
 }
 
-/// A correction of the solution as an internal weight.
-pub fn correction(conv: Conventions, s: &Solution, plane: &str) -> Complex64 {
-    let c = s
-        .corrections
+/// The solution's correction in `plane`.
+fn corrected<'a>(s: &'a Solution, plane: &str) -> &'a Correction {
+    s.corrections
         .iter()
         .find(|c| c.plane == plane)
-        .expect("plane corrected");
+        .expect("plane corrected")
+}
+
+/// A correction of the solution as an internal weight.
+pub fn correction(conv: Conventions, s: &Solution, plane: &str) -> Complex64 {
+    let c = corrected(s, plane);
     weight_in(conv, c.mass_g, c.angle_deg)
 }
 
 /// A correction's `total` as an internal weight.
 pub fn total(conv: Conventions, s: &Solution, plane: &str) -> Complex64 {
-    let c = s
-        .corrections
-        .iter()
-        .find(|c| c.plane == plane)
-        .expect("plane corrected");
-    let t = c.total.as_ref().expect("total given with from_run");
+    let t = corrected(s, plane)
+        .total
+        .as_ref()
+        .expect("total given with from_run");
     weight_in(conv, t.mass_g, t.angle_deg)
 }
 

@@ -14,7 +14,7 @@ use reqwest::header::CONTENT_TYPE;
 use reqwest::Method;
 use serde_json::{json, Value};
 
-use common::{example, path_segment, post, send, start_server};
+use common::{example, fresh_server, path_segment, post, send};
 use support::schema::{mutate, Schemas};
 
 const REQUESTS: usize = 2000;
@@ -135,9 +135,7 @@ fn body(
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn generated_requests_get_only_declared_answers_with_declared_bodies() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("fuzz.db")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
     let schemas = Schemas { doc: &doc };
     // The checker itself finds what it must (or this test could not fail).

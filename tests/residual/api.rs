@@ -4,7 +4,7 @@
 use crate::common;
 use crate::support;
 
-use common::{example, post, start_server, store_solution};
+use common::{example, fresh_server, post, store_solution};
 use fieldbal::balancing::acceptance::check;
 use fieldbal::balancing::model::Conventions;
 use serde_json::{json, Value};
@@ -17,9 +17,7 @@ fn body(phases: bool) -> Value {
 
 #[tokio::test]
 async fn the_server_answers_the_same_check_as_the_core_with_and_without_phases() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("db.sqlite")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     for phases in [true, false] {
         let b = body(phases);
         let (status, _, got) = post(&client, &server.url("/api/v1/residual-unbalance"), &b).await;
@@ -45,9 +43,7 @@ async fn the_server_answers_the_same_check_as_the_core_with_and_without_phases()
 
 #[tokio::test]
 async fn bad_checks_get_the_contracts_error_naming_the_field() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("db.sqlite")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let with = |f: &dyn Fn(&mut Value)| {
         let mut b = body(true);
         f(&mut b);
@@ -89,9 +85,7 @@ async fn bad_checks_get_the_contracts_error_naming_the_field() {
 
 #[tokio::test]
 async fn a_stored_session_with_a_rotor_ends_with_an_iso_verdict_per_plane() {
-    let dir = tempfile::tempdir().unwrap();
-    let (_, server) = start_server(&dir.path().join("db.sqlite")).await;
-    let client = reqwest::Client::new();
+    let (_dir, server, client) = fresh_server().await;
     let mut session = example("pump-two-plane-exact.json")["session"].clone();
     session["rotor"] = json!({"mass_kg": 420, "service_speed_rpm": 1480, "balance_grade": "G6.3"});
     let (status, _, stored) = post(&client, &server.url("/api/v1/sessions"), &session).await;

@@ -63,13 +63,7 @@ pub fn weight_in(conv: Conventions, mass_g: f64, deg: f64) -> Complex64 {
 
 /// An internal weight as (mass, angle in degrees in the session's direction, `[0, 360)`).
 pub fn weight_out(conv: Conventions, w: Complex64) -> (f64, f64) {
-    let arg = trig::arg(w.im, w.re);
-    let deg = match conv.angle_direction {
-        AngleDirection::AgainstRotation => -arg,
-        AngleDirection::WithRotation => arg,
-    }
-    .to_degrees();
-    (modulus(w), wrap_deg(deg))
+    polar_out(w, conv.angle_direction == AngleDirection::AgainstRotation)
 }
 
 /// A reading (amplitude, phase in the session's convention) as an internal
@@ -85,13 +79,16 @@ pub fn reading_in(conv: Conventions, amplitude: f64, phase_deg: f64) -> Complex6
 /// An internal phasor as (amplitude, phase in degrees in the session's convention, `[0, 360)`).
 /// The argument is [`trig::arg`] (within 4.5·10⁻¹⁶ rad of the exact `atan2`).
 pub fn reading_out(conv: Conventions, y: Complex64) -> (f64, f64) {
-    let arg = trig::arg(y.im, y.re);
-    let deg = match conv.phase {
-        PhaseConvention::Lag => -arg,
-        PhaseConvention::Lead => arg,
-    }
-    .to_degrees();
-    (modulus(y), wrap_deg(deg))
+    polar_out(y, conv.phase == PhaseConvention::Lag)
+}
+
+/// `z` as (modulus, angle in degrees in `[0, 360)`), the angle negated when
+/// `negate` (lag phases, angles against rotation): the one conversion behind
+/// [`weight_out`] and [`reading_out`].
+fn polar_out(z: Complex64, negate: bool) -> (f64, f64) {
+    let arg = trig::arg(z.im, z.re);
+    let deg = if negate { -arg } else { arg }.to_degrees();
+    (modulus(z), wrap_deg(deg))
 }
 
 /// Smallest absolute difference of two angles in degrees, in `[0, 180]`.

@@ -92,6 +92,17 @@ fn reflect(ur: &[f64], ui: &[f64], xr: &mut [f64], xi: &mut [f64]) {
     }
 }
 
+/// `‖x‖₂` of the complex vector with parts `xr`, `xi` (the same sum in the
+/// same order wherever the kernel needs a norm).
+#[inline(always)]
+fn norm2(xr: &[f64], xi: &[f64]) -> f64 {
+    xr.iter()
+        .zip(xi.iter())
+        .map(|(a, b)| a * a + b * b)
+        .sum::<f64>()
+        .sqrt()
+}
+
 /// The factorisation of `w` (real and imaginary parts, `m × q` column-major)
 /// in place, LAPACK's way: from row `k` down, column `k` becomes the
 /// reflector `u_k` (zero when there was nothing to reflect); above row `k`
@@ -103,12 +114,7 @@ fn factor_kernel(m: usize, q: usize, wr: &mut [f64], wi: &mut [f64], diag: &mut 
         let (hr, tr) = wr.split_at_mut((k + 1) * m);
         let (hi, ti) = wi.split_at_mut((k + 1) * m);
         let (xr, xi) = (&mut hr[k * m + k..], &mut hi[k * m + k..]);
-        let norm = xr
-            .iter()
-            .zip(xi.iter())
-            .map(|(a, b)| a * a + b * b)
-            .sum::<f64>()
-            .sqrt();
+        let norm = norm2(xr, xi);
         if norm == 0.0 {
             // Nothing to reflect: `H_k = I`, `u_k = 0` (and `R_kk = 0`).
             diag[k] = Complex64::new(0.0, 0.0);
@@ -125,12 +131,7 @@ fn factor_kernel(m: usize, q: usize, wr: &mut [f64], wi: &mut [f64], diag: &mut 
         let head = phase * norm;
         xr[0] += head.re;
         xi[0] += head.im;
-        let unorm = xr
-            .iter()
-            .zip(xi.iter())
-            .map(|(a, b)| a * a + b * b)
-            .sum::<f64>()
-            .sqrt();
+        let unorm = norm2(xr, xi);
         for (a, b) in xr.iter_mut().zip(xi.iter_mut()) {
             *a /= unorm;
             *b /= unorm;

@@ -80,6 +80,12 @@ def true_kappa(w, y0, t):
 
 def solve(binary, y, t, speeds, sensors):
     """The answer's corrections and per-plane covariances for readings y (runs × rows)."""
+    c, cov, _ = solve_full(binary, y, t, speeds, sensors)
+    return c, cov
+
+
+def solve_full(binary, y, t, speeds, sensors):
+    """`solve`, and the answer's warnings."""
     ns = len(sensors)
     runs = [{"id": f"R{k}", "readings": [
         {"amplitude": float(abs(y[k, a])), "phase_deg": float(np.degrees(np.angle(y[k, a])) % 360),
@@ -94,7 +100,7 @@ def solve(binary, y, t, speeds, sensors):
     out = subprocess.run([binary, "solve", "-"], input=json.dumps(body).encode(), capture_output=True, check=True)
     sol = json.loads(out.stdout)
     c = np.array([x["mass_g"] * np.exp(1j * np.radians(x["angle_deg"])) for x in sol["corrections"]])
-    return c, np.array([x["uncertainty"]["covariance_g2"] for x in sol["corrections"]])
+    return c, np.array([x["uncertainty"]["covariance_g2"] for x in sol["corrections"]]), sol.get("warnings", [])
 
 
 def kwiden(y, t, c, cov, ndir=16):

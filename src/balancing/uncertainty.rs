@@ -42,6 +42,7 @@ use num_complex::Complex64;
 mod apply;
 mod bias;
 mod dof;
+mod hidden;
 mod propagate;
 mod region;
 mod remaining;

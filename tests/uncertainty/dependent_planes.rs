@@ -205,12 +205,23 @@ fn unwarned(nodes: &[usize], effect: f64, seed: u64) -> (f64, (usize, usize)) {
 /// Where a residual hides along the weak direction (the large-residual
 /// fixture, 100 % trials) the planes with no warning of their own held 71 %
 /// before session 15 (205 of 287 checks, 400 realisations): the answer now
-/// flags the whole job (`regions_unreliable`, uncertainty/trust.rs) wherever
+/// flags the whole job (`regions_unreliable`, uncertainty/hidden.rs) wherever
 /// a plane is `ill_conditioned`, which is every job here; no plane is then
-/// left looking trustworthy. On eiv.rs's well-conditioned rotor at one speed
-/// with 100 % trials the flag fires only with `ill_conditioned` (15 % of the
-/// jobs, where noise makes two planes look alike), and the planes it leaves
-/// unflagged hold their 95 % (94.8 % of 972 checks).
+/// left looking trustworthy.
+///
+/// With 30 % trials the coefficients' noise makes the planes look less alike
+/// than they are, and before session 17 16 % of these jobs carried no flag,
+/// their unwarned planes missing nearly always (scripts/
+/// issue12_hidden_residual.py: 21 of 23 checks). The flag now also fires
+/// where a plane's own share is below the threshold once its noise is taken
+/// out (hidden.rs): here in 94 % of the jobs (1 in 10 still escapes, and its
+/// planes still miss; method §8, "Session 17").
+///
+/// On eiv.rs's well-conditioned rotor at one speed with 100 % trials the
+/// true own share of P0 is 0.218, just above the threshold 0.2, so the
+/// noise-free estimate falls below it in about 30 % of the jobs (Darlow's
+/// factor of the noisy readings alone, `ill_conditioned`: 15 %); the planes
+/// left unflagged hold their 95 % (94.1 % of 846 checks).
 #[test]
 fn where_nearly_alike_planes_can_hide_a_residual_no_plane_is_left_unwarned() {
     let (share, (held, checked)) = unwarned(&LARGE_RESIDUAL, 1.0, 500);
@@ -222,11 +233,18 @@ fn where_nearly_alike_planes_can_hide_a_residual_no_plane_is_left_unwarned() {
         "{checked} unwarned plane checks"
     );
 
+    let (share, (held, checked)) = unwarned(&LARGE_RESIDUAL, 0.3, 502);
+    eprintln!("nodes {LARGE_RESIDUAL:?}, 30 %: regions_unreliable in {share:.3} of jobs, unwarned planes held {held} of {checked}");
+    assert!(
+        share >= 0.9,
+        "regions_unreliable in {share} of jobs at 30 %"
+    );
+
     let (share, (held, checked)) = unwarned(&[0, 3, 6], 1.0, 501);
     let p = held as f64 / checked as f64;
     eprintln!("nodes [0, 3, 6], 100 %: regions_unreliable in {share:.3} of jobs, unwarned planes held {p:.3} ({checked})");
     assert!(
-        share <= 0.3,
+        share <= 0.4,
         "regions_unreliable in {share} of well-conditioned jobs"
     );
     // eiv.rs's window, lower edge: 93 % less 3 binomial sd of these checks.

@@ -232,8 +232,10 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
 
     // Coefficients' noise beside their signal: the trial too small to trust (issue 12).
     super::warn_untrusted(fit, &prop, &kappas, solution);
-    // Nearly alike planes: every plane's region may be off (issue 12).
-    super::trust::warn_hidden_residual(solution);
+    // Nearly alike planes: every plane's region may be off (issue 12), also
+    // where only the coefficients' noise makes them look told apart.
+    let shares = super::hidden::denoised_shares(fit, options, &prop, cov);
+    super::hidden::warn_hidden_residual(fit, shares.as_deref(), solution);
 
     let min_max = options.objective == Some(Objective::MinMax);
     let bound = solution

@@ -22,13 +22,9 @@
 use nalgebra::{DMatrix, Matrix2};
 use num_complex::Complex64;
 
-use super::propagate::svd_parts;
+use super::propagate::{svd_parts, RANK_TOLERANCE};
 use super::CHI2_2_95;
 use crate::balancing::solve::Fit;
-
-/// Singular values of `A` at or below this times the largest are left out of
-/// `A⁺`, as in `propagate`.
-const RANK_TOLERANCE: f64 = 1e-10;
 
 /// Smallest degrees of freedom used: `T²` has no 95 % quantile at `ν ≤ 1`.
 const MIN_DOF: f64 = 2.0;

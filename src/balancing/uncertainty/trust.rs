@@ -126,41 +126,6 @@ pub fn warn_untrusted(
     }
 }
 
-/// Add the job-level `regions_unreliable` wherever a plane is
-/// `ill_conditioned` (issue 12, session 15; method §8, "Nearly dependent
-/// planes"). Where planes look nearly alike to the sensors, a vibration no
-/// plane can correct hides along the weak direction of the fit and moves
-/// every plane's correction, planes with no warning of their own included:
-/// on the calibration rotor with planes at nodes 1, 2, 4 (4–5 % of the
-/// vibration left uncorrected) the ellipses of the planes with no warning
-/// held 19 % at 30 % trials and 71 % at 100 %, and 0–39 % at two close
-/// speeds (tests/uncertainty/dependent_planes.rs: 205 of 287 at 100 %,
-/// none left unwarned now); where nothing is left uncorrected the same
-/// ellipses hold 96–100 % (planes at nodes 0, 1, 6, the held-out rotor).
-/// The readings cannot tell the two apart (method §8, sessions 9–10), so the
-/// answer says so for the whole job. It fires exactly with `ill_conditioned` and adds no alarm to a
-/// job without one.
-pub fn warn_hidden_residual(solution: &mut Solution) {
-    let planes: Vec<&str> = solution
-        .warnings
-        .iter()
-        .filter(|w| w.code == "ill_conditioned")
-        .filter_map(|w| w.plane.as_deref())
-        .collect();
-    if planes.is_empty() {
-        return;
-    }
-    let named = planes.join(", ");
-    let message = format!(
-        "plane(s) {named} act on the sensors almost like a combination of the other planes (ill_conditioned): a vibration that no plane can correct can then hide in the fit and move every plane's correction, planes without a warning included, far outside its 95 % interval, or the intervals can be far too wide; the readings cannot tell which. Treat this job's mass and angle intervals as unreliable: fit the weights, do a check run and trim, or add a sensor or speed that tells the planes apart, or solve without the dependent plane (drop_dependent_planes)"
-    );
-    solution.warnings.push(Warning {
-        code: "regions_unreliable".into(),
-        message,
-        plane: None,
-    });
-}
-
 /// Below this share of its own (a sine of 0.5: 30° from the others' span) a
 /// plane's dependence on the others at least halves its effect-to-noise ratio.
 const DEPENDENT_SHARE: f64 = 0.5;

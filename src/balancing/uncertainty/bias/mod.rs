@@ -203,6 +203,22 @@ pub struct Unbiased {
 /// (with `weights`) and `planes`: `c` less its second-order bias, where the
 /// noise is evidenced (see the module doc); `None` where it is not formed or
 /// does not differ from `c`. `bounded`: a mass bound is binding.
+/// Whether the readings' noise is known rather than assumed: stated in the
+/// options (`amplitude_noise_pct` / `phase_noise_deg`) or measured by
+/// `samples` on some reading of the used `rows`. Only then are second-order
+/// figures formed from it (this estimate; `hidden`'s noise-free shares).
+pub(in crate::balancing::uncertainty) fn noise_known(
+    checked: &Checked,
+    rows: &[usize],
+    options: &SolveOptions,
+) -> bool {
+    let stated = options.amplitude_noise_pct.is_some() || options.phase_noise_deg.is_some();
+    stated
+        || rows
+            .iter()
+            .any(|&a| (0..checked.runs.len()).any(|k| checked.reading(a, k).samples.is_some()))
+}
+
 #[allow(clippy::too_many_arguments)]
 pub fn debiased(
     checked: &Checked,
@@ -215,11 +231,7 @@ pub fn debiased(
     c: &DVector<Complex64>,
 ) -> Option<Unbiased> {
     let least_squares = options.objective.unwrap_or_default() == Objective::LeastSquares;
-    let stated = options.amplitude_noise_pct.is_some() || options.phase_noise_deg.is_some();
-    let measured = rows
-        .iter()
-        .any(|&a| (0..checked.runs.len()).any(|k| checked.reading(a, k).samples.is_some()));
-    if !least_squares || bounded || !(stated || measured) {
+    if !least_squares || bounded || !noise_known(checked, rows, options) {
         return None;
     }
     let problem = Problem {

@@ -25,7 +25,7 @@ use moments::real_cov_full;
 pub(in crate::balancing::uncertainty) use moments::{moments, svd_parts};
 
 /// Singular values below this fraction of the largest count as zero (as in the solver).
-const RANK_TOLERANCE: f64 = 1e-10;
+pub(super) const RANK_TOLERANCE: f64 = 1e-10;
 
 /// Covariances of everything a solution reports, internal frame, from reading noise.
 #[derive(Debug, Clone, PartialEq)]

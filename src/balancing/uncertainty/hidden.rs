@@ -1,0 +1,185 @@
+//! `regions_unreliable`: where nearly alike planes can hide a vibration that
+//! no plane can correct, so that every plane's 95 % region may be far off
+//! (issue 12; method §8, "Nearly dependent planes" and "Session 17").
+//!
+//! Where planes look nearly alike to the sensors, a residual the planes
+//! cannot reach hides along the weak direction of the fit and moves every
+//! plane's correction, planes with no warning of their own included: on the
+//! calibration rotor with planes at nodes 1, 2, 4 (4–5 % of the vibration
+//! left uncorrected) the ellipses of the unwarned planes held 19 % at 30 %
+//! trials and 71 % at 100 %; where nothing is left uncorrected the same
+//! ellipses hold 96–100 % (planes at nodes 0, 1, 6, the held-out rotor). The
+//! readings cannot tell the two apart (method §8, sessions 9–10), so the
+//! answer says so for the whole job (session 15), wherever a plane is
+//! `ill_conditioned` (Darlow's significance factor below
+//! [`SIGNIFICANCE_THRESHOLD`]).
+//!
+//! Session 17: that test is made on the measured influence coefficients,
+//! and their noise makes planes look less alike than they are. The noise
+//! adds its own energy to every column, independent of the others: `E[ÂᴴÂ]
+//! = AᴴA + M` (Fuller 1987, *Measurement Error Models*, §2.2), `M` the noise
+//! energy of the coefficients (`M_jl = Σ_a g_a² E[dW̄_aj dW_al]`). With 30 %
+//! trials the factor of a plane whose true share is 0.05–0.09 came out at
+//! 0.17–0.18 at the median, above 0.2 in a quarter of the jobs, and those
+//! jobs carried no `regions_unreliable` while their unwarned planes held
+//! 0–9 % (planes at nodes 0, 3, 4 at 2500 and 3000 rpm: 68 of 72 missed).
+//! So where the noise is known (stated in the options or measured by
+//! `samples`, as for the errors-in-variables estimate) the same test is also
+//! made with the noise taken out: plane `j`'s own share is `s̃_j² = (‖(I −
+//! P_o) â_j‖² − N⊥_j) / (‖â_j‖² − M_jj)`, where `P_o` projects on the other
+//! columns, `M_jj = Σ_a g_a² E|dW_aj|²` is the noise energy of its column and
+//! `N⊥_j = Σ_a g_a² E|dW_aj|² (1 − h_a⁽⁻ʲ⁾)` the part of it outside the
+//! others' span (`h_a⁽⁻ʲ⁾` the row's leverage in that span). Only the plane's
+//! own noise is taken out: the others' noise turns their span rather than
+//! adding to the residual. For the weakest plane of each fixture below the
+//! median estimate came within 0.025 of the true share, where the plug-in's
+//! was 0.05–0.13 above it; a plane whose partners are themselves nearly
+//! alike stays overestimated (their span turns with the noise), which the
+//! job-level test does not need, as the weakest plane decides. Fuller's moment estimate of the whole
+//! Gram matrix, `ÂᴴÂ − M̂` (§2.2), was tried first and takes out too much
+//! with few rows (its inverse is biased): on the well-conditioned planes at
+//! nodes 0, 3, 6 at one speed (true shares 0.22, 0.26, 0.23) it put a share
+//! below 0.2 in 50 % of the jobs at 100 % trials and 77 % at 30 %, this
+//! estimate in 24 % and 37 % (its medians 0.22/0.26/0.24; 300 jobs, /tmp
+//! prototype). Measured from outside (`scripts/issue12_hidden_residual.py`,
+//! 300 jobs a case, 2 %/2° stated, before → after):
+//!
+//! - planes that hide a residual (nodes 0, 3, 4 and 1, 2, 4; one, two and four
+//!   speeds; 30 % trials): jobs flagged 40–84 % → 91–95 %, checks of planes
+//!   under no warning that miss 197 → 64 (of 208 → 66 such checks: the
+//!   jobs that still escape are those where the noise hides the dependence
+//!   best, and their planes still miss). At 100 % trials every job was and
+//!   is flagged;
+//! - planes nearly alike with nothing hidden (nodes 0, 1, 6; the held-out
+//!   rotor), whose ellipses hold 96–100 %: flagged 23–80 % → 56–94 % at 30 %
+//!   trials;
+//! - planes just told apart (nodes 0, 3, 6, own share 0.22 at one speed):
+//!   15 → 30 % of the jobs at 100 % trials, 21 → 39 % at 30 %, 50 → 79 % at
+//!   two speeds (own share 0.13 there); at four speeds (shares 0.33 and
+//!   more) 0 → 7 % at 30 % trials and none at 100 %; the held-out rotor at
+//!   ten speeds never, as before.
+
+use nalgebra::Matrix2;
+
+use super::propagate::RANK_TOLERANCE;
+use super::Propagation;
+use crate::balancing::diagnostics::SIGNIFICANCE_THRESHOLD;
+use crate::balancing::model::SolveOptions;
+use crate::balancing::solution::{Solution, Warning};
+use crate::balancing::solve::Fit;
+
+/// Per plane of `fit.planes`: the share of its effect that is its own, with
+/// its coefficients' noise taken out (`s̃_j`, module doc), or `None` where
+/// the noise is not known (the default model only), the coefficients were
+/// supplied, or the fit has no more rows than planes or is rank deficient.
+/// `0.0` where the noise is as large as the plane's own part.
+pub fn denoised_shares(
+    fit: &Fit,
+    options: &SolveOptions,
+    prop: &Propagation,
+    cov: &[Vec<Matrix2<f64>>],
+) -> Option<Vec<f64>> {
+    fit.t_pinv.as_ref()?;
+    let sel = &fit.selection;
+    if !super::bias::noise_known(&fit.checked, &sel.rows, options) {
+        return None;
+    }
+    let runs = prop.omega.nrows();
+    let q = fit.planes.len();
+    // As many rows as planes leave no residual to hide.
+    if q == 0 || fit.factor.nrows() <= q || prop.omega.ncols() != q {
+        return None;
+    }
+    let gram_inv = prop.gram_inv_diag.as_ref()?;
+    let (a_pinv, _) = fit
+        .factor
+        .pinv_and_gram_inv(RANK_TOLERANCE * fit.factor.max());
+    let mut signal = vec![0.0; q]; // ‖a_j‖²
+    let mut noise = vec![0.0; q]; // M_jj
+    let mut noise_off = vec![0.0; q]; // N⊥_j
+    for (i, (&row, &g)) in sel.rows.iter().zip(&sel.weights).enumerate() {
+        let a = |j: usize| fit.w[(row, fit.planes[j])] * g;
+        // The row's leverage in the span of all the columns, `[A A⁺]_ii`.
+        let lev: f64 = (0..q).map(|j| (a(j) * a_pinv[(j, i)]).re).sum();
+        for j in 0..q {
+            // E|dA_ij|²: every reading k of the row moves it by δ ω_kj.
+            let var: f64 = g
+                * g
+                * (0..runs)
+                    .map(|k| cov[row][k].trace() * prop.omega[(k, j)].norm_sqr())
+                    .sum::<f64>();
+            // Leverage in the span of the other columns: `h_i` less column
+            // j's own residual direction, `|A⁺_ji|² / [(AᴴA)⁻¹]_jj`.
+            let others = lev - a_pinv[(j, i)].norm_sqr() / gram_inv[j];
+            signal[j] += a(j).norm_sqr();
+            noise[j] += var;
+            noise_off[j] += var * (1.0 - others).clamp(0.0, 1.0);
+        }
+    }
+    Some(
+        (0..q)
+            .map(|j| {
+                // ‖(I − P)â_j‖² = 1 / [(ÂᴴÂ)⁻¹]_jj, less its noise; over ‖â_j‖², less its noise.
+                let own = 1.0 / gram_inv[j] - noise_off[j];
+                let whole = signal[j] - noise[j];
+                let share2 = own / whole;
+                if own > 0.0 && whole > 0.0 && share2.is_finite() {
+                    share2.min(1.0).sqrt()
+                } else {
+                    0.0
+                }
+            })
+            .collect(),
+    )
+}
+
+/// Add the job-level `regions_unreliable` wherever a plane is
+/// `ill_conditioned`, or `denoised` (per plane of `fit.planes`,
+/// [`denoised_shares`]) puts a plane's own share below the same threshold.
+pub fn warn_hidden_residual(fit: &Fit, denoised: Option<&[f64]>, solution: &mut Solution) {
+    let planes: Vec<&str> = solution
+        .warnings
+        .iter()
+        .filter(|w| w.code == "ill_conditioned")
+        .filter_map(|w| w.plane.as_deref())
+        .collect();
+    let session = fit.checked.session;
+    let hidden: Vec<(String, f64)> = denoised
+        .unwrap_or(&[])
+        .iter()
+        .zip(&fit.planes)
+        .filter(|&(&s, _)| s < SIGNIFICANCE_THRESHOLD)
+        .map(|(&s, &j)| (session.planes[j].id.clone(), s))
+        .filter(|(id, _)| !planes.contains(&id.as_str()))
+        .collect();
+    if planes.is_empty() && hidden.is_empty() {
+        return;
+    }
+    let mut why = Vec::new();
+    if !planes.is_empty() {
+        why.push(format!(
+            "plane(s) {} act on the sensors almost like a combination of the other planes (ill_conditioned)",
+            planes.join(", ")
+        ));
+    }
+    if !hidden.is_empty() {
+        let each: Vec<String> = hidden
+            .iter()
+            .map(|(id, s)| format!("{id} {:.0} %", 100.0 * s))
+            .collect();
+        why.push(format!(
+            "with the noise of the influence coefficients taken out (from amplitude_noise_pct, phase_noise_deg or the samples' scatter), only this much of each plane's effect is its own: {} (below {:.0} %, where a plane counts as dependent); the noise makes the planes look less alike than they are",
+            each.join(", "),
+            100.0 * SIGNIFICANCE_THRESHOLD
+        ));
+    }
+    let message = format!(
+        "{}: a vibration that no plane can correct can then hide in the fit and move every plane's correction, planes without a warning included, far outside its 95 % interval, or the intervals can be far too wide; the readings cannot tell which. Treat this job's mass and angle intervals as unreliable: fit the weights, do a check run and trim, or add a sensor or speed that tells the planes apart, or solve without the dependent plane (drop_dependent_planes)",
+        why.join("; and ")
+    );
+    solution.warnings.push(Warning {
+        code: "regions_unreliable".into(),
+        message,
+        plane: None,
+    });
+}

@@ -90,6 +90,14 @@ fn masses_known() -> MatrixFamily {
     }
 }
 
+/// The chain's masses, unknown: one parameter a point mass.
+fn masses_unknown() -> MatrixFamily {
+    MatrixFamily {
+        fixed: vec![vec![0.0; 3]; 3],
+        parameters: (0..3).map(|i| rows(&point_mass(i))).collect(),
+    }
+}
+
 fn stiffness_unknown() -> MatrixFamily {
     MatrixFamily {
         fixed: vec![vec![0.0; 3]; 3],
@@ -129,10 +137,7 @@ fn stiffnesses_from_eigenpairs_rounded_to_three_digits_are_off_by_about_the_roun
 #[test]
 fn masses_and_stiffnesses_together_come_from_mass_normalised_rounded_shapes() {
     let req = ModelRequest {
-        mass: MatrixFamily {
-            fixed: vec![vec![0.0; 3]; 3],
-            parameters: (0..3).map(|i| rows(&point_mass(i))).collect(),
-        },
+        mass: masses_unknown(),
         stiffness: stiffness_unknown(),
         modes: measured(true, &[0, 1, 2]),
         initial: None,
@@ -186,10 +191,7 @@ fn shapes_measured_at_two_of_three_masses_are_completed_by_iteration() {
 #[test]
 fn masses_and_stiffnesses_with_partial_normalised_shapes_settle_on_the_true_model() {
     let req = ModelRequest {
-        mass: MatrixFamily {
-            fixed: vec![vec![0.0; 3]; 3],
-            parameters: (0..3).map(|i| rows(&point_mass(i))).collect(),
-        },
+        mass: masses_unknown(),
         stiffness: stiffness_unknown(),
         modes: measured(false, &[0, 2]),
         initial: Some(Initial {

@@ -35,13 +35,7 @@ pub fn solve(
     }
     // Scale columns so that parameters of very different size (a stiffness of
     // 1e5 beside a damping of 10) weigh alike in the rank decision.
-    let scale: Vec<f64> = a
-        .column_iter()
-        .map(|c| c.norm().max(f64::MIN_POSITIVE))
-        .collect();
-    for (j, mut col) in a.column_iter_mut().enumerate() {
-        col /= scale[j];
-    }
+    let scale = unit_columns(&mut a);
     let svd = a.svd(true, true);
     let smax = svd.singular_values.max();
     let smin = svd.singular_values.min();
@@ -58,6 +52,20 @@ pub fn solve(
         x.len(),
         x.iter().zip(&scale).map(|(v, s)| v / s),
     ))
+}
+
+/// Scale `a`'s columns to unit norm in place; returns each column's norm
+/// (at least the smallest positive number), by which the solution of the
+/// scaled problem is divided to give the unscaled one.
+pub(crate) fn unit_columns(a: &mut DMatrix<f64>) -> Vec<f64> {
+    let scale: Vec<f64> = a
+        .column_iter()
+        .map(|c| c.norm().max(f64::MIN_POSITIVE))
+        .collect();
+    for (j, mut col) in a.column_iter_mut().enumerate() {
+        col /= scale[j];
+    }
+    scale
 }
 
 /// Root mean square of a vector's entries (0 for an empty vector).

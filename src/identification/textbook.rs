@@ -82,13 +82,7 @@ pub fn estimate(model: &OneMass, responses: &[Response]) -> Result<Estimate, Inp
         y[b] = mw2 * r.zi;
     }
     // Scale columns so that c (large) and b (small) are of one size for the SVD.
-    let scale: Vec<f64> = k
-        .column_iter()
-        .map(|c| c.norm().max(f64::MIN_POSITIVE))
-        .collect();
-    for (j, mut col) in k.column_iter_mut().enumerate() {
-        col /= scale[j];
-    }
+    let scale = super::lsq::unit_columns(&mut k);
     let svd = k.svd(true, true);
     let eps = 1e-13 * svd.singular_values.max();
     let theta = svd

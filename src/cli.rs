@@ -42,6 +42,7 @@ pub enum Command {
     /// API 617/684 residual-unbalance check of a file (the body of
     /// `POST /api/v1/residual-unbalance`; `-` for standard input).
     Residual {
+        /// Request JSON, as posted to the endpoint (`speed_rpm`, `trial`, `journal_load_kg`, `readings`, …); `-` for standard input.
         file: PathBuf,
         #[command(flatten)]
         input: InputArgs,

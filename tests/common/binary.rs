@@ -1,11 +1,30 @@
 //! The real `fieldbal serve` binary in a test: start it, read the address it
 //! logs, stop it with SIGTERM (bounded) or SIGKILL. The one starter that the
-//! serve, edge, hardening and replica tests share.
+//! serve, edge, hardening and replica tests share. And `fieldbal solve` run
+//! once for its JSON ([`solve`]).
 
+use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::Duration;
+
+/// `fieldbal solve ARGS…`: whether it exited with success, and the JSON it
+/// printed (a panic showing the output when that is not JSON).
+pub fn solve<S: AsRef<OsStr>>(args: &[S]) -> (bool, serde_json::Value) {
+    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .arg("solve")
+        .args(args)
+        .output()
+        .expect("fieldbal solve runs");
+    let value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "fieldbal solve printed no JSON ({e}): {}",
+            String::from_utf8_lossy(&out.stdout)
+        )
+    });
+    (out.status.success(), value)
+}
 
 /// Start `fieldbal serve ARGS…` (in `dir` if given, with `env` added and no
 /// inherited DATABASE_URL or FIELDBAL_TOKENS); returns it and the address it logged.

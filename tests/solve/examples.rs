@@ -6,7 +6,7 @@ use std::process::Command;
 
 use crate::common;
 
-use common::assert_matches_expected;
+use common::{assert_matches_expected, binary};
 use fieldbal::balancing::{self, Solution};
 use serde_json::Value;
 
@@ -52,17 +52,8 @@ fn every_example_is_solved_by_the_library_to_its_expected_answer() {
 #[test]
 fn every_example_is_solved_by_the_command_line_to_its_expected_answer() {
     for (name, example) in balancing_examples() {
-        let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-            .arg("solve")
-            .arg(examples_dir().join(&name))
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&out.stdout)
-        );
-        let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let (ok, value) = binary::solve(&[examples_dir().join(&name)]);
+        assert!(ok, "{name}: {value}");
         assert_matches_expected(&name, &value, &example["expected"]);
     }
 }
@@ -130,13 +121,8 @@ fn the_command_line_prints_the_contract_error_and_fails_on_a_bad_session() {
     .unwrap();
     example["session"]["runs"][1]["weights"][0]["mass_g"] = (-30.0).into();
     std::fs::write(&path, serde_json::to_vec(&example).unwrap()).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .arg("solve")
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (ok, value) = binary::solve(&[&path]);
+    assert!(!ok);
     assert_eq!(value["error"]["field"], "session.runs[1].weights[0].mass_g");
 }
 
@@ -145,20 +131,9 @@ fn the_command_line_takes_options_from_a_file() {
     let dir = tempfile::tempdir().unwrap();
     let opts = dir.path().join("options.json");
     std::fs::write(&opts, r#"{"planes": ["inboard"]}"#).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args([
-            "solve",
-            examples_dir()
-                .join("pump-two-plane-exact.json")
-                .to_str()
-                .unwrap(),
-            "--options",
-            opts.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let value: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let file = examples_dir().join("pump-two-plane-exact.json");
+    let (ok, value) = binary::solve(&[file.as_os_str(), "--options".as_ref(), opts.as_os_str()]);
+    assert!(ok, "{value}");
     assert_eq!(value["corrections"].as_array().unwrap().len(), 1);
     assert_eq!(value["corrections"][0]["plane"], "inboard");
 }

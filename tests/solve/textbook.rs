@@ -2,8 +2,8 @@
 //! method §6) reproduced by the library and by `fieldbal solve`.
 
 use std::path::PathBuf;
-use std::process::Command;
 
+use crate::common::binary;
 use fieldbal::identification::textbook::{estimate_case, Case};
 use serde_json::Value;
 
@@ -44,17 +44,8 @@ fn the_library_reproduces_every_published_estimate() {
 
 #[test]
 fn the_command_line_reproduces_every_published_estimate() {
-    let out = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .arg("solve")
-        .arg(file())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stdout)
-    );
-    let got: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (ok, got) = binary::solve(&[file()]);
+    assert!(ok, "{got}");
     let want: Value = serde_json::from_slice(&std::fs::read(file()).unwrap()).unwrap();
     for (g, w) in got["cases"]
         .as_array()

@@ -158,12 +158,14 @@ pub fn assert_matches_expected(
 /// service's own encoder (`http::store::runs`) on purpose: a test's URL
 /// should not depend on the code under test.
 pub fn path_segment(s: &str) -> String {
+    let unreserved = |b: u8| b.is_ascii_alphanumeric() || b"-._~".contains(&b);
     s.bytes()
-        .map(|b| match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => {
-                (b as char).to_string()
+        .map(|b| {
+            if unreserved(b) {
+                char::from(b).to_string()
+            } else {
+                format!("%{b:02X}")
             }
-            _ => format!("%{b:02X}"),
         })
         .collect()
 }

@@ -6,12 +6,20 @@
 //!   `y_k = λ1 y_{k−1} + λ2 y_{k−2}`;
 //! - turbulent damping `y'' + ω0² y + μ y'|y'| = 0`: the averaged solution
 //!   `a0/(1 + λt) cos(ωt + ψ0)` and its model (7.2), linear in `(λ0, λ1, λ2)`.
+//!
+//! Refused (422 naming the field): a step `dt_s` outside [`DT_S`], 1e-9 s to
+//! 1e3 s (a 1 GHz sampling rate, far beyond any vibration acquisition, to one
+//! sample in about 17 minutes, far slower than the slowest structural mode
+//! sampled twice a period; past these a step of 1e-300 s overflowed `ω0²` and
+//! one of 1e300 s answered 0 Hz, review session 17); `samples` whose fit
+//! covers less than half a period (a ramp fitted "a decay" of 5.8e-9 Hz) or
+//! whose fitted envelope grows (a negative decrement): neither is a free decay.
 
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::lsq::{self, finite, rms};
+use super::lsq::{self, finite, rms, within};
 use crate::balancing::phasor::wrap_deg;
 use crate::balancing::InputError;
 
@@ -19,6 +27,11 @@ use crate::balancing::InputError;
 pub const MIN_SAMPLES: usize = 8;
 /// Most samples accepted (a bound on work per request).
 pub const MAX_SAMPLES: usize = 1_000_000;
+/// Sampling steps accepted, seconds (module doc).
+pub const DT_S: (f64, f64) = (1e-9, 1e3);
+/// Growth of the fitted envelope over the record above which the samples are
+/// refused as not decaying: rounding of an exact undamped record stays below.
+const MAX_GROWTH: f64 = 1e-9;
 
 /// The damping law of the decay.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
@@ -81,17 +94,7 @@ fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
     for (k, &y) in req.samples.iter().enumerate() {
         finite(|| format!("samples[{k}]"), y)?;
     }
-    finite(|| "dt_s".into(), req.dt_s)?;
-    if req.dt_s <= 0.0 {
-        return Err(InputError::invalid(
-            "invalid_value",
-            "dt_s",
-            format!(
-                "the sampling step must be greater than 0 s; got {}",
-                req.dt_s
-            ),
-        ));
-    }
+    within(|| "dt_s".into(), req.dt_s, DT_S, "the sampling step, s,")?;
     if req.samples.iter().all(|&y| y == 0.0) {
         return Err(InputError::invalid(
             "invalid_value",
@@ -105,7 +108,7 @@ fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
 /// Identify the oscillator from its free decay.
 pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
     check(req)?;
-    let got = match req.damping {
+    let (got, theta, growth) = match req.damping {
         DampingLaw::Viscous => viscous(&req.samples, req.dt_s),
         DampingLaw::Turbulent => turbulent(&req.samples, req.dt_s),
     }?;
@@ -126,16 +129,36 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
             "the free decay: a result overflows (samples of very different orders of magnitude?)",
         ));
     }
+    // A ramp is fitted exactly by (7.1) with e^{-2nτ} = 1 and cos ωτ = 1: an
+    // "oscillation" of 5.8e-9 Hz and a negative decrement (review, session 17).
+    let span = theta * (req.samples.len() - 1) as f64;
+    if span < std::f64::consts::PI {
+        return Err(not_oscillatory(format!(
+            "no decaying oscillation found in the samples: the fit covers {:.2e} of a period; a free decay needs at least half a period",
+            span / std::f64::consts::TAU
+        )));
+    }
+    if growth > 1.0 + MAX_GROWTH {
+        return Err(InputError::invalid(
+            "not_decaying",
+            "samples",
+            format!("no decaying oscillation found in the samples: the fitted amplitude grows {growth:.6} times over the record (decrement {:.3e}); a free decay shrinks", got.decrement),
+        ));
+    }
     Ok(got)
+}
+
+/// The samples as a whole are no decaying oscillation.
+fn not_oscillatory(message: impl Into<String>) -> InputError {
+    InputError::invalid("not_oscillatory", "samples", message)
 }
 
 /// `ωτ` from `cos(ωτ)`, or an error when the samples do not oscillate (or
 /// alias: the method needs `ωτ < π`, more than two samples per period).
 fn angle_per_step(cos: f64) -> Result<f64, InputError> {
     if cos.is_nan() || cos.abs() >= 1.0 {
-        return Err(InputError::unsolvable(
-            "not_oscillatory",
-            "the samples do not fit a decaying oscillation sampled at least twice per period",
+        return Err(not_oscillatory(
+            "no decaying oscillation found in the samples: none fits sampled at least twice per period",
         ));
     }
     Ok(cos.acos())
@@ -161,17 +184,19 @@ fn amplitude_phase(
     Ok((p[0].hypot(p[1]), wrap_deg((-p[1]).atan2(p[0]).to_degrees())))
 }
 
+/// A fit, its angle per step `ωτ` and its envelope's last over first value.
+type Fitted = (FreeDecay, f64, f64);
+
 /// Viscous damping (7.1): `λ1 = 2 e^{−nτ} cos(ω_d τ)`, `λ2 = −e^{−2nτ}`.
-fn viscous(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
+fn viscous(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     let rows = y.len() - 2;
     let a = DMatrix::from_fn(rows, 2, |r, j| y[r + 1 - j]);
     let b = DVector::from_iterator(rows, y[2..].iter().copied());
     let l = lsq::solve(a, &b, "the viscous decay model (7.1)")?;
     let ratio = -l[1];
     if ratio.is_nan() || ratio <= 0.0 {
-        return Err(InputError::unsolvable(
-            "not_oscillatory",
-            "the samples do not fit a decaying oscillation (e^{-2nτ} came out ≤ 0)",
+        return Err(not_oscillatory(
+            "no decaying oscillation found in the samples: e^{-2nτ} of the fit (7.1) came out ≤ 0",
         ));
     }
     let n = -ratio.ln() / (2.0 * tau);
@@ -184,7 +209,8 @@ fn viscous(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
         yk - amplitude * (-n * t).exp() * (wd * t + psi).cos()
     }));
     let c_over_m = wd * wd + n * n;
-    Ok(FreeDecay {
+    let growth = (-n * (y.len() - 1) as f64 * tau).exp();
+    let got = FreeDecay {
         frequency_hz: c_over_m.sqrt() / std::f64::consts::TAU,
         c_over_m,
         b_over_m: 2.0 * n,
@@ -192,12 +218,13 @@ fn viscous(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
         amplitude,
         phase_deg,
         fit_rms,
-    })
+    };
+    Ok((got, theta, growth))
 }
 
 /// Turbulent damping (7.2): rows `[y_{k−1}, k y_k + (k−2) y_{k−2}, (k−1) y_{k−1}]`
 /// against `y_k + y_{k−2}`, unknowns `(λ0, λ1, λ2)`, `λ1 = −l = −λτ`.
-fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
+fn turbulent(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     let rows = y.len() - 2;
     let a = DMatrix::from_fn(rows, 3, |r, j| {
         let k = r + 2;
@@ -214,9 +241,8 @@ fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
     let w = theta / tau;
     let l = -p[1];
     if l.is_nan() || l <= -1.0 / y.len() as f64 {
-        return Err(InputError::unsolvable(
-            "not_oscillatory",
-            "the samples do not fit a decay of the form a0/(1 + λt)",
+        return Err(not_oscillatory(
+            "no decaying oscillation found in the samples: none fits a decay of the form a0/(1 + λt)",
         ));
     }
     // δ0 = λT = l·2π/(ωτ); a0, ψ0 from u_k = (1 + l k) y_k = a0 cos(kωτ + ψ0).
@@ -227,7 +253,7 @@ fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
         let kf = k as f64;
         yk - amplitude * (kf * theta + psi).cos() / (1.0 + l * kf)
     }));
-    Ok(FreeDecay {
+    let got = FreeDecay {
         frequency_hz: w / std::f64::consts::TAU,
         c_over_m: w * w,
         b_over_m: 3.0 * decrement / (8.0 * amplitude),
@@ -235,37 +261,13 @@ fn turbulent(y: &[f64], tau: f64) -> Result<FreeDecay, InputError> {
         amplitude,
         phase_deg,
         fit_rms,
-    })
+    };
+    Ok((got, theta, 1.0 / (1.0 + l * (y.len() - 1) as f64)))
 }
 
 // Objects only: a positional array is refused (see `balancing::wire`).
 crate::balancing::wire::objects_only!(FreeDecayRequest);
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_exact_viscous_decay_gives_back_its_parameters() {
-        let (w0, zeta, tau) = (5.0_f64, 0.03, 0.1);
-        let n = zeta * w0;
-        let wd = (w0 * w0 - n * n).sqrt();
-        let samples: Vec<f64> = (0..30)
-            .map(|k| {
-                let t = k as f64 * tau;
-                2.0 * (-n * t).exp() * (wd * t + 0.4).cos()
-            })
-            .collect();
-        let got = identify(&FreeDecayRequest {
-            samples,
-            dt_s: tau,
-            damping: DampingLaw::Viscous,
-        })
-        .unwrap();
-        assert!((got.c_over_m - w0 * w0).abs() < 1e-9 * w0 * w0);
-        assert!((got.b_over_m - 2.0 * n).abs() < 1e-9);
-        assert!((got.amplitude - 2.0).abs() < 1e-9);
-        assert!((got.phase_deg - 0.4_f64.to_degrees()).abs() < 1e-7);
-        assert!(got.fit_rms < 1e-10);
-    }
-}
+#[path = "decay_tests.rs"]
+mod tests;

@@ -2,16 +2,24 @@
 //! and its validation. `M = M0 + Σ mᵢ Mᵢ`, `K = K0 + Σ kᵢ Kᵢ`, matrices as
 //! arrays of rows; measured modes with frequency, shape (entries `null` where
 //! not measured; the whole shape may be left out) and weight.
+//!
+//! Mass entries (of `M0` and of every `Mᵢ`) are refused outside [`MASS`]: a
+//! diagonal entry is 0 or of magnitude 1e-9 to 1e9, any other at most 1e9 in
+//! magnitude (a microgram, the service's lightest trial weight, to a million
+//! tonnes, in kg; the range allows grams or tonnes too). Masses of 1e300 and
+//! 1e-300 gave 0 Hz and stiffnesses of 1e286 (review, session 17).
 
 use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::lsq::finite;
+use super::lsq::{finite, within};
 use crate::balancing::InputError;
 
 /// Largest model accepted (degrees of freedom).
 pub const MAX_DOF: usize = 200;
+/// Magnitude of a mass entry other than 0 on the diagonal (module doc).
+pub const MASS: (f64, f64) = (1e-9, 1e9);
 
 /// A matrix family `A0 + Σ pᵢ Aᵢ`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
@@ -144,6 +152,26 @@ fn matrix(field: &str, rows: &[Vec<f64>], n: Option<usize>) -> Result<DMatrix<f6
     Ok(a)
 }
 
+/// Mass entries in their range (module doc), naming `field[i][j]`.
+fn mass_entries(field: &str, rows: &[Vec<f64>]) -> Result<(), InputError> {
+    for (i, r) in rows.iter().enumerate() {
+        for (j, &x) in r.iter().enumerate() {
+            let f = || format!("{field}[{i}][{j}]");
+            if i != j {
+                within(
+                    f,
+                    x.abs(),
+                    (0.0, MASS.1),
+                    "an off-diagonal mass entry's size",
+                )?;
+            } else if x != 0.0 {
+                within(f, x.abs(), MASS, "a diagonal mass entry's size (or 0)")?;
+            }
+        }
+    }
+    Ok(())
+}
+
 fn family(
     field: &str,
     f: &MatrixFamily,
@@ -179,6 +207,10 @@ fn initial(field: &str, given: Option<&Vec<f64>>, count: usize) -> Result<Vec<f6
 pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
     let n = matrix("mass.fixed", &req.mass.fixed, None)?.nrows();
     let (m0, mi) = family("mass", &req.mass, n)?;
+    mass_entries("mass.fixed", &req.mass.fixed)?;
+    for (l, p) in req.mass.parameters.iter().enumerate() {
+        mass_entries(&format!("mass.parameters[{l}]"), p)?;
+    }
     let (k0, ki) = family("stiffness", &req.stiffness, n)?;
     if mi.is_empty() && ki.is_empty() {
         return Err(InputError::invalid(

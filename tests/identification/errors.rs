@@ -267,3 +267,82 @@ async fn results_that_overflow_are_refused_rather_than_answered_as_null() {
     }
     server.shutdown().await;
 }
+
+#[tokio::test]
+async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
+    // An outside review (session 17): a ramp gave 200 with 5.8e-9 Hz and a
+    // negative decrement; dt_s 1e300 gave 0 Hz and 1e-300 a not_finite with no
+    // field; masses of 1e300 and 1e-300 gave 0 Hz and stiffnesses of 1e286.
+    let ramp = json!({"samples": [1, 2, 3, 4, 5, 6, 7, 8], "dt_s": 1.0, "damping": "viscous"});
+    let growing: Vec<f64> = (0..30)
+        .map(|k| (0.05 * k as f64).exp() * (0.7 * k as f64 + 0.3).cos())
+        .collect();
+    let masses = |a: f64, b: f64| {
+        with(model_request(), |v| {
+            v["mass"]["fixed"] = json!([[a, 0.0], [0.0, b]])
+        })
+    };
+    let cases: Vec<(&str, &str, Value, &str, &str)> = vec![
+        (
+            "ramp",
+            "free-decay",
+            ramp,
+            "samples",
+            "no decaying oscillation",
+        ),
+        (
+            "growing",
+            "free-decay",
+            with(free_decay_request(), |v| v["samples"] = json!(growing)),
+            "samples",
+            "no decaying oscillation",
+        ),
+        (
+            "huge step",
+            "free-decay",
+            with(free_decay_request(), |v| v["dt_s"] = json!(1e300)),
+            "dt_s",
+            "from 1e-9 to 1e3",
+        ),
+        (
+            "tiny step",
+            "free-decay",
+            with(free_decay_request(), |v| v["dt_s"] = json!(1e-300)),
+            "dt_s",
+            "from 1e-9 to 1e3",
+        ),
+        (
+            "huge and tiny masses",
+            "model",
+            masses(1e300, 1e-300),
+            "mass.fixed[0][0]",
+            "from 1e-9 to 1e9",
+        ),
+        (
+            "tiny and huge masses",
+            "model",
+            masses(1e-300, 1e300),
+            "mass.fixed[0][0]",
+            "from 1e-9 to 1e9",
+        ),
+        (
+            "a huge mass parameter",
+            "model",
+            with(model_request(), |v| {
+                v["mass"]["parameters"] = json!([[[0.0, 1e300], [1e300, 0.0]]])
+            }),
+            "mass.parameters[0][0][1]",
+            "from 0e0 to 1e9",
+        ),
+    ];
+    let (_dir, server, client) = fresh_server().await;
+    for (name, what, body, want_field, want_text) in cases {
+        let url = server.url(&format!("/api/v1/identify/{what}"));
+        let (status, _, answer) = post(&client, &url, &body).await;
+        assert_eq!(status, 422, "{name}: {answer}");
+        assert_eq!(answer["error"]["field"], want_field, "{name}: {answer}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(message.contains(want_text), "{name}: {answer}");
+    }
+    server.shutdown().await;
+}

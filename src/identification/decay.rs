@@ -94,7 +94,12 @@ fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
     for (k, &y) in req.samples.iter().enumerate() {
         finite(|| format!("samples[{k}]"), y)?;
     }
-    within(|| "dt_s".into(), req.dt_s, DT_S, "the sampling step, s,")?;
+    within(
+        || "dt_s".into(),
+        req.dt_s,
+        DT_S,
+        "the sampling step dt_s (seconds)",
+    )?;
     if req.samples.iter().all(|&y| y == 0.0) {
         return Err(InputError::invalid(
             "invalid_value",
@@ -158,7 +163,7 @@ fn not_oscillatory(message: impl Into<String>) -> InputError {
 fn angle_per_step(cos: f64) -> Result<f64, InputError> {
     if cos.is_nan() || cos.abs() >= 1.0 {
         return Err(not_oscillatory(
-            "no decaying oscillation found in the samples: none fits sampled at least twice per period",
+            "no decaying oscillation found in the samples (sampled at least twice per period, as the method needs)",
         ));
     }
     Ok(cos.acos())
@@ -242,7 +247,7 @@ fn turbulent(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     let l = -p[1];
     if l.is_nan() || l <= -1.0 / y.len() as f64 {
         return Err(not_oscillatory(
-            "no decaying oscillation found in the samples: none fits a decay of the form a0/(1 + λt)",
+            "no decaying oscillation found in the samples of the form a0/(1 + λt) cos(ωt + ψ0)",
         ));
     }
     // δ0 = λT = l·2π/(ωτ); a0, ψ0 from u_k = (1 + l k) y_k = a0 cos(kωτ + ψ0).

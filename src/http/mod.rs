@@ -3,6 +3,7 @@
 //! Tests and `fieldbal serve` start it the same way: [`connect_db`], then
 //! [`serve`] on a bound listener with a shutdown future.
 
+pub mod args;
 pub mod assets;
 pub mod compute;
 pub mod edge;
@@ -54,10 +55,10 @@ pub struct ServeArgs {
     #[arg(long, env = "DATABASE_URL", default_value = "sqlite://fieldbal.db")]
     pub database: String,
     /// Largest accepted request body, bytes.
-    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = DEFAULT_BODY_LIMIT)]
+    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = DEFAULT_BODY_LIMIT, value_parser = args::positive_usize)]
     pub body_limit_bytes: usize,
     /// Longest time a request may take, body included, seconds (then 408).
-    #[arg(long, env = "FIELDBAL_REQUEST_TIMEOUT_SECS", default_value_t = DEFAULT_REQUEST_TIMEOUT_SECS)]
+    #[arg(long, env = "FIELDBAL_REQUEST_TIMEOUT_SECS", default_value_t = DEFAULT_REQUEST_TIMEOUT_SECS, value_parser = args::positive_u64)]
     pub request_timeout_secs: u64,
     #[command(flatten)]
     pub edge: edge::EdgeArgs,
@@ -72,7 +73,7 @@ pub struct LimitArgs {
     #[command(flatten)]
     pub session: SessionLimitArgs,
     /// Solves that run at once (default: the number of CPUs).
-    #[arg(long, env = "FIELDBAL_SOLVE_SLOTS")]
+    #[arg(long, env = "FIELDBAL_SOLVE_SLOTS", value_parser = args::positive_usize)]
     pub solve_slots: Option<usize>,
     /// How long a solve waits for a free slot before 503 with Retry-After, ms.
     #[arg(long, env = "FIELDBAL_SOLVE_QUEUE_MS", default_value_t = work::DEFAULT_SOLVE_QUEUE_MS)]
@@ -85,19 +86,19 @@ pub struct LimitArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionLimitArgs {
     /// Most correction planes in a session.
-    #[arg(long, env = "FIELDBAL_MAX_PLANES", default_value_t = Limits::DEFAULT.planes)]
+    #[arg(long, env = "FIELDBAL_MAX_PLANES", default_value_t = Limits::DEFAULT.planes, value_parser = args::positive_usize)]
     pub max_planes: usize,
     /// Most sensors in a session.
-    #[arg(long, env = "FIELDBAL_MAX_SENSORS", default_value_t = Limits::DEFAULT.sensors)]
+    #[arg(long, env = "FIELDBAL_MAX_SENSORS", default_value_t = Limits::DEFAULT.sensors, value_parser = args::positive_usize)]
     pub max_sensors: usize,
     /// Most speed points (speeds more than 1 % apart) in a session's reference run.
-    #[arg(long, env = "FIELDBAL_MAX_SPEED_POINTS", default_value_t = Limits::DEFAULT.speed_points)]
+    #[arg(long, env = "FIELDBAL_MAX_SPEED_POINTS", default_value_t = Limits::DEFAULT.speed_points, value_parser = args::positive_usize)]
     pub max_speed_points: usize,
     /// Most runs in a session.
-    #[arg(long, env = "FIELDBAL_MAX_RUNS", default_value_t = Limits::DEFAULT.runs)]
+    #[arg(long, env = "FIELDBAL_MAX_RUNS", default_value_t = Limits::DEFAULT.runs, value_parser = args::positive_usize)]
     pub max_runs: usize,
     /// Most readings over all runs of a session.
-    #[arg(long, env = "FIELDBAL_MAX_READINGS", default_value_t = Limits::DEFAULT.readings)]
+    #[arg(long, env = "FIELDBAL_MAX_READINGS", default_value_t = Limits::DEFAULT.readings, value_parser = args::positive_usize)]
     pub max_readings: usize,
 }
 

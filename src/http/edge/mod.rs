@@ -34,14 +34,14 @@ pub struct EdgeArgs {
     pub allowed_hosts: String,
     /// Longest time to receive a request's header, and to idle between
     /// requests on a kept-alive connection, seconds.
-    #[arg(long, env = "FIELDBAL_HEADER_READ_TIMEOUT_SECS", default_value_t = connections::DEFAULT_HEADER_READ_TIMEOUT_SECS)]
+    #[arg(long, env = "FIELDBAL_HEADER_READ_TIMEOUT_SECS", default_value_t = connections::DEFAULT_HEADER_READ_TIMEOUT_SECS, value_parser = crate::http::args::positive_u64)]
     pub header_read_timeout_secs: u64,
     /// Longest time a write to a client may make no progress (a client that
     /// stopped reading), seconds; then the connection is closed.
-    #[arg(long, env = "FIELDBAL_WRITE_TIMEOUT_SECS", default_value_t = connections::DEFAULT_WRITE_TIMEOUT_SECS)]
+    #[arg(long, env = "FIELDBAL_WRITE_TIMEOUT_SECS", default_value_t = connections::DEFAULT_WRITE_TIMEOUT_SECS, value_parser = crate::http::args::positive_u64)]
     pub write_timeout_secs: u64,
     /// Most connections open at once; more are answered 503 and closed.
-    #[arg(long, env = "FIELDBAL_MAX_CONNECTIONS", default_value_t = connections::DEFAULT_MAX_CONNECTIONS)]
+    #[arg(long, env = "FIELDBAL_MAX_CONNECTIONS", default_value_t = connections::DEFAULT_MAX_CONNECTIONS, value_parser = crate::http::args::positive_usize)]
     pub max_connections: usize,
     /// On SIGTERM, longest wait for connections to finish, seconds.
     #[arg(long, env = "FIELDBAL_SHUTDOWN_GRACE_SECS", default_value_t = connections::DEFAULT_SHUTDOWN_GRACE_SECS)]

@@ -4,7 +4,7 @@
 //! phases for every reading or for none. Each refusal names its field.
 
 use super::{ResidualRequest, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG};
-use crate::balancing::error::InputError;
+use crate::balancing::error::{shown, InputError};
 use crate::balancing::model::Conventions;
 use crate::balancing::phasor::weight_angle_in;
 use crate::balancing::validate::{
@@ -61,7 +61,12 @@ fn within(field: &str, x: f64, (lo, hi): (f64, f64), what: &str) -> Result<f64, 
         Err(InputError::invalid(
             "invalid_value",
             field,
-            format!("{what} must be a finite number from {lo} to {hi}, got {x}"),
+            format!(
+                "{what} must be a finite number from {} to {}, got {}",
+                shown(lo),
+                shown(hi),
+                shown(x)
+            ),
         ))
     }
 }
@@ -140,8 +145,10 @@ pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
                 "invalid_value",
                 format!("readings[{k}].amplitude"),
                 format!(
-                    "an amplitude is 0 or a finite number from {} to {}, got {a}",
-                    AMPLITUDE.0, AMPLITUDE.1
+                    "an amplitude is 0 or a finite number from {} to {}, got {}",
+                    shown(AMPLITUDE.0),
+                    shown(AMPLITUDE.1),
+                    shown(a)
                 ),
             ));
         }

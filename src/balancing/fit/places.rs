@@ -54,7 +54,10 @@ pub fn check_plane(i: usize, plane: &Plane) -> Result<(), InputError> {
             if !(a.is_finite() && (0.0..360.0).contains(&a)) {
                 return Err(invalid(
                     format!("planes[{i}].places_deg[{k}]"),
-                    format!("a place angle is a finite number of degrees in [0, 360), got {a}"),
+                    format!(
+                        "a place angle is a finite number of degrees in [0, 360), got {}",
+                        crate::balancing::error::shown(a)
+                    ),
                 ));
             }
             if let Some(j) = list[..k].iter().position(|&b| (a - b).abs() < 1e-9) {
@@ -89,7 +92,7 @@ pub fn check_plane(i: usize, plane: &Plane) -> Result<(), InputError> {
         if !(m.is_finite() && m > 0.0 && m <= MAX_KIT_MASS_G) {
             return Err(invalid(
                 format!("planes[{i}].kit.masses_g[{k}]"),
-                format!("a weight size is a finite number of grams above 0 and at most {MAX_KIT_MASS_G}, got {m}"),
+                format!("a weight size is a finite number of grams above 0 and at most {MAX_KIT_MASS_G}, got {}", crate::balancing::error::shown(m)),
             ));
         }
     }

@@ -70,6 +70,18 @@ impl InputError {
     }
 }
 
+/// A number as an error message shows it: as Rust prints it where that is
+/// short, in exponent form where the plain digits would run long (`1e308`
+/// printed plainly is 309 digits; outside review, session 17).
+pub fn shown(x: f64) -> String {
+    let a = x.abs();
+    if x.is_finite() && a != 0.0 && !(1e-4..1e9).contains(&a) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// Parse JSON into `T`, turning serde's error into an [`InputError`] whose
 /// `field` is the path of the offending value (for an unknown field, the path of
 /// the unknown field itself, so that `phase_dg` is named).
@@ -269,5 +281,22 @@ mod tests {
         let err = from_json::<Session>(b"{\"name\": ").unwrap_err();
         assert_eq!(err.kind, ErrorKind::Malformed);
         assert_eq!(err.code, "malformed_json");
+    }
+}
+
+#[cfg(test)]
+mod shown_tests {
+    use super::shown;
+
+    #[test]
+    fn long_numbers_are_shown_in_exponent_form_and_short_ones_plainly() {
+        assert_eq!(shown(1e308), "1e308");
+        assert_eq!(shown(-2.5e-300), "-2.5e-300");
+        assert_eq!(shown(1.5e-7), "1.5e-7");
+        assert_eq!(shown(400.0), "400");
+        assert_eq!(shown(0.25), "0.25");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(shown(123456789.0), "123456789");
+        assert_eq!(shown(f64::INFINITY), "inf");
     }
 }

@@ -153,7 +153,7 @@ pub fn select(checked: &Checked, options: &SolveOptions) -> Result<Selection, In
             return Err(InputError::invalid(
                 "invalid_value",
                 format!("{f}.weight"),
-                format!("a row weight is 0 (the rows are left out) or a finite number from {MIN_ROW_WEIGHT:e} to {MAX_ROW_WEIGHT:e}, got {w}"),
+                format!("a row weight is 0 (the rows are left out) or a finite number from {MIN_ROW_WEIGHT:e} to {MAX_ROW_WEIGHT:e}, got {}", crate::balancing::error::shown(w)),
             ));
         }
         let sensor = match &rw.sensor {

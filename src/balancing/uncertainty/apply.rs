@@ -41,7 +41,10 @@ fn check(
         return Err(InputError::invalid(
             "invalid_value",
             field,
-            format!("the 1X repeatability must be a finite number from 0 to {max} {unit}, got {x}"),
+            format!(
+                "the 1X repeatability must be a finite number from 0 to {max} {unit}, got {}",
+                crate::balancing::error::shown(x)
+            ),
         ));
     }
     Ok(x)

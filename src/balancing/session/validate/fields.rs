@@ -7,7 +7,7 @@
 use std::collections::HashMap;
 
 use super::{IdIndex, GRADES, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE};
-use crate::balancing::error::InputError;
+use crate::balancing::error::{shown, InputError};
 use crate::balancing::model::{Rotor, Session};
 
 pub(crate) const MAX_RADIUS_MM: f64 = 1e5;
@@ -57,12 +57,19 @@ pub(super) fn check_positive(
         } else {
             "greater than 0"
         };
-        return Err(invalid(field(), format!("{what} must be {bound}, got {x}")));
+        return Err(invalid(
+            field(),
+            format!("{what} must be {bound}, got {}", shown(x)),
+        ));
     }
     if x > max {
         return Err(invalid(
             field(),
-            format!("{what} of {x} is beyond the plausible limit of {max}"),
+            format!(
+                "{what} of {} is beyond the plausible limit of {}",
+                shown(x),
+                shown(max)
+            ),
         ));
     }
     Ok(())
@@ -74,7 +81,7 @@ pub(super) fn check_amplitude(field: impl Fn() -> String, x: f64) -> Result<(), 
     if x != 0.0 && x < MIN_AMPLITUDE {
         return Err(invalid(
             field(),
-            format!("the amplitude {x} is below {MIN_AMPLITUDE} of its unit, which no instrument resolves: give 0 for no vibration, or use a smaller unit"),
+            format!("the amplitude {} is below {MIN_AMPLITUDE} of its unit, which no instrument resolves: give 0 for no vibration, or use a smaller unit", shown(x)),
         ));
     }
     Ok(())
@@ -134,7 +141,7 @@ pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
             "rotor.service_speed_rpm",
             format!(
                 "the service speed must be at least {MIN_SERVICE_SPEED_RPM} rpm, got {}",
-                r.service_speed_rpm
+                shown(r.service_speed_rpm)
             ),
         ));
     }

@@ -282,11 +282,6 @@ mod tests {
         assert_eq!(err.kind, ErrorKind::Malformed);
         assert_eq!(err.code, "malformed_json");
     }
-}
-
-#[cfg(test)]
-mod shown_tests {
-    use super::shown;
 
     #[test]
     fn long_numbers_are_shown_in_exponent_form_and_short_ones_plainly() {

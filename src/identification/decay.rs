@@ -8,18 +8,24 @@
 //!   `a0/(1 + λt) cos(ωt + ψ0)` and its model (7.2), linear in `(λ0, λ1, λ2)`.
 //!
 //! Refused (422 naming the field): a step `dt_s` outside [`DT_S`], 1e-9 s to
-//! 1e3 s (a 1 GHz sampling rate, far beyond any vibration acquisition, to one
-//! sample in about 17 minutes, far slower than the slowest structural mode
-//! sampled twice a period; past these a step of 1e-300 s overflowed `ω0²` and
-//! one of 1e300 s answered 0 Hz, review session 17); `samples` whose fit
+//! 25 s (a 1 GHz sampling rate, far beyond any vibration acquisition, to the
+//! slowest accepted mode, 0.01 Hz, sampled four times a period: the method
+//! needs more than two, and at session 17's 1e3 s no accepted frequency could
+//! be answered; past these a step of 1e-300 s overflowed `ω0²` and one of
+//! 1e300 s answered 0 Hz, review session 17); `samples` whose fit
 //! covers less than half a period (a ramp fitted "a decay" of 5.8e-9 Hz) or
 //! whose fitted envelope grows (a negative decrement): neither is a free decay.
+//! Samples above 1e12 in size, or whose largest is below 1e-12
+//! ([`super::ranges::SAMPLE`]), and a fit whose frequency falls outside
+//! 0.01 to 1e5 Hz ([`super::ranges::FREQUENCY_HZ`], `frequency_out_of_range`,
+//! naming `samples` and `dt_s`) are refused too.
 
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::lsq::{self, finite, rms, within};
+use super::ranges::{self, SAMPLE};
 use crate::balancing::phasor::wrap_deg;
 use crate::balancing::InputError;
 
@@ -28,7 +34,7 @@ pub const MIN_SAMPLES: usize = 8;
 /// Most samples accepted (a bound on work per request).
 pub const MAX_SAMPLES: usize = 1_000_000;
 /// Sampling steps accepted, seconds (module doc).
-pub const DT_S: (f64, f64) = (1e-9, 1e3);
+pub const DT_S: (f64, f64) = (1e-9, 25.0);
 /// Growth of the fitted envelope over the record above which the samples are
 /// refused as not decaying: 5 %. Below it the record is answered with what
 /// was fitted: a lightly damped record whose noise tips the fitted damping
@@ -113,7 +119,13 @@ fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
             "every sample is 0: there is no decay to identify",
         ));
     }
-    Ok(())
+    ranges::vector(
+        "samples",
+        req.samples.iter().map(|&y| Some(y)),
+        SAMPLE,
+        "a sample",
+        "give the samples in a smaller unit",
+    )
 }
 
 /// Identify the oscillator from its free decay.
@@ -149,6 +161,9 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
             span / std::f64::consts::TAU
         )));
     }
+    // dt_s 1e300 answered 0 Hz (review, session 17); in range, a million
+    // samples at 25 s still fit an oscillation of 2e-8 Hz.
+    ranges::frequencies(&[got.c_over_m], "the samples at this dt_s")?;
     if growth > 1.0 + MAX_GROWTH {
         return Err(InputError::invalid(
             "not_decaying",

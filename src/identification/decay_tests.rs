@@ -71,14 +71,43 @@ fn an_undamped_record_is_still_identified() {
 #[test]
 fn a_step_outside_its_range_is_refused_naming_dt_s() {
     // 1e300 answered 0 Hz; 1e-300 a not_finite with no field (review, session 17).
-    for dt_s in [1e300, 1e-300, 0.0, -0.1, 0.99e-9, 1.01e3] {
+    for dt_s in [1e300, 1e-300, 0.0, -0.1, 0.99e-9, 25.1, 1e3] {
         let err = identify(&request(oscillation(-0.05), dt_s, DampingLaw::Viscous)).unwrap_err();
         assert_eq!(err.field.as_deref(), Some("dt_s"), "{dt_s}: {err:?}");
-        assert!(err.message.contains("from 1e-9 to 1e3"), "{}", err.message);
+        assert!(
+            err.message.contains("from 1e-9 to 2.5e1"),
+            "{}",
+            err.message
+        );
     }
-    for dt_s in [DT_S.0, DT_S.1] {
-        let got = identify(&request(oscillation(-0.05), dt_s, DampingLaw::Viscous)).unwrap();
-        assert!((got.c_over_m * dt_s * dt_s - 0.7f64.powi(2) - 0.05f64.powi(2)).abs() < 1e-9);
+    // At either end, an oscillation of a frequency in range: 1e5 Hz at
+    // 1e-9 s (two periods in 20 000 samples), 0.0127 Hz at 25 s.
+    for (dt_s, theta, n) in [(DT_S.0, 6e-4, 20_000), (DT_S.1, 2.0, 30)] {
+        let a = 0.05 * theta / 0.7;
+        let samples = (0..n)
+            .map(|k| (-a * k as f64).exp() * (theta * k as f64 + 0.3).cos())
+            .collect();
+        let got = identify(&request(samples, dt_s, DampingLaw::Viscous)).unwrap();
+        let want = theta * theta + a * a;
+        assert!(
+            (got.c_over_m * dt_s * dt_s - want).abs() < 1e-6 * want,
+            "{dt_s}: {got:?}"
+        );
+    }
+}
+
+#[test]
+fn a_frequency_out_of_range_is_refused_naming_samples_and_dt_s() {
+    // 0.7 rad a step at 25 s is 4.5e-3 Hz, at 1e-9 s 1.1e8 Hz.
+    for dt_s in [DT_S.1, DT_S.0] {
+        let err = identify(&request(oscillation(-0.05), dt_s, DampingLaw::Viscous)).unwrap_err();
+        assert_eq!(err.code, "frequency_out_of_range", "{dt_s}: {err:?}");
+        assert!(
+            err.message
+                .starts_with("the samples at this dt_s give a natural frequency of"),
+            "{}",
+            err.message
+        );
     }
 }
 

@@ -10,6 +10,7 @@
 //! - [`model`]: the lecture's weighted least-squares correction of a discrete
 //!   (mass/stiffness matrix) model from measured natural frequencies and shapes.
 //! - [`textbook`]: the textbook's worked one-mass cases, given as responses.
+//! - [`ranges`]: the accepted range of every number, and why.
 
 pub mod api684;
 pub mod correct;
@@ -18,6 +19,7 @@ pub mod lsq;
 pub mod model;
 pub mod modes;
 pub mod onemass;
+pub mod ranges;
 pub mod rotor;
 pub mod textbook;
 

@@ -3,23 +3,24 @@
 //! arrays of rows; measured modes with frequency, shape (entries `null` where
 //! not measured; the whole shape may be left out) and weight.
 //!
-//! Mass entries (of `M0` and of every `Mᵢ`) are refused outside [`MASS`]: a
-//! diagonal entry is 0 or of magnitude 1e-9 to 1e9, any other at most 1e9 in
-//! magnitude (a microgram, the service's lightest trial weight, to a million
-//! tonnes, in kg; the range allows grams or tonnes too). Masses of 1e300 and
-//! 1e-300 gave 0 Hz and stiffnesses of 1e286 (review, session 17).
+//! Every number is refused outside its range ([`super::ranges`], which says
+//! why), naming its field: mass entries (of `M0` and of every `Mᵢ`) outside
+//! [`MASS`] (a diagonal entry 0 or of magnitude 1e-9 to 1e9, any other at
+//! most 1e9), stiffness entries likewise outside [`STIFFNESS`], measured
+//! frequencies outside [`FREQUENCY_HZ`], shape entries above 1e6 in size
+//! (the largest at least 1e-6), weights outside [`WEIGHT`] and starting
+//! parameters above [`INITIAL`] in size.
 
 use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::lsq::{finite, within};
+use super::ranges::{self, FREQUENCY_HZ, INITIAL, MASS, SHAPE, STIFFNESS, WEIGHT};
 use crate::balancing::InputError;
 
 /// Largest model accepted (degrees of freedom).
 pub const MAX_DOF: usize = 200;
-/// Magnitude of a mass entry other than 0 on the diagonal (module doc).
-pub const MASS: (f64, f64) = (1e-9, 1e9);
 
 /// A matrix family `A0 + Σ pᵢ Aᵢ`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
@@ -152,26 +153,6 @@ fn matrix(field: &str, rows: &[Vec<f64>], n: Option<usize>) -> Result<DMatrix<f6
     Ok(a)
 }
 
-/// Mass entries in their range (module doc), naming `field[i][j]`.
-fn mass_entries(field: &str, rows: &[Vec<f64>]) -> Result<(), InputError> {
-    for (i, r) in rows.iter().enumerate() {
-        for (j, &x) in r.iter().enumerate() {
-            let f = || format!("{field}[{i}][{j}]");
-            if i != j {
-                within(
-                    f,
-                    x.abs(),
-                    (0.0, MASS.1),
-                    "an off-diagonal mass entry's size",
-                )?;
-            } else if x != 0.0 {
-                within(f, x.abs(), MASS, "a diagonal mass entry's size (or 0)")?;
-            }
-        }
-    }
-    Ok(())
-}
-
 fn family(
     field: &str,
     f: &MatrixFamily,
@@ -198,7 +179,15 @@ fn initial(field: &str, given: Option<&Vec<f64>>, count: usize) -> Result<Vec<f6
         Some(v) => v
             .iter()
             .enumerate()
-            .map(|(i, &x)| finite(|| format!("{field}[{i}]"), x))
+            .map(|(i, &x)| {
+                within(
+                    || format!("{field}[{i}]"),
+                    x.abs(),
+                    (0.0, INITIAL),
+                    "a starting parameter's size",
+                )
+                .map(|_| x)
+            })
             .collect(),
     }
 }
@@ -207,11 +196,16 @@ fn initial(field: &str, given: Option<&Vec<f64>>, count: usize) -> Result<Vec<f6
 pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
     let n = matrix("mass.fixed", &req.mass.fixed, None)?.nrows();
     let (m0, mi) = family("mass", &req.mass, n)?;
-    mass_entries("mass.fixed", &req.mass.fixed)?;
-    for (l, p) in req.mass.parameters.iter().enumerate() {
-        mass_entries(&format!("mass.parameters[{l}]"), p)?;
-    }
     let (k0, ki) = family("stiffness", &req.stiffness, n)?;
+    for (name, f, range) in [
+        ("mass", &req.mass, MASS),
+        ("stiffness", &req.stiffness, STIFFNESS),
+    ] {
+        ranges::entries(&format!("{name}.fixed"), &f.fixed, range, name)?;
+        for (l, p) in f.parameters.iter().enumerate() {
+            ranges::entries(&format!("{name}.parameters[{l}]"), p, range, name)?;
+        }
+    }
     if mi.is_empty() && ki.is_empty() {
         return Err(InputError::invalid(
             "no_parameters",
@@ -230,14 +224,12 @@ pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
     let mut shapes = Vec::new();
     let mut weights = Vec::new();
     for (j, mode) in req.modes.iter().enumerate() {
-        let f = finite(|| format!("modes[{j}].frequency_hz"), mode.frequency_hz)?;
-        if f <= 0.0 {
-            return Err(InputError::invalid(
-                "invalid_value",
-                format!("modes[{j}].frequency_hz"),
-                "a natural frequency must be greater than 0",
-            ));
-        }
+        let f = within(
+            || format!("modes[{j}].frequency_hz"),
+            mode.frequency_hz,
+            FREQUENCY_HZ,
+            "a natural frequency in Hz",
+        )?;
         w2.push((std::f64::consts::TAU * f).powi(2));
         let shape = match &mode.shape {
             None => vec![None; n],
@@ -249,23 +241,23 @@ pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
                 ))
             }
             Some(s) => {
-                for (i, x) in s.iter().enumerate() {
-                    if let Some(x) = x {
-                        finite(|| format!("modes[{j}].shape[{i}]"), *x)?;
-                    }
-                }
+                ranges::vector(
+                    &format!("modes[{j}].shape"),
+                    s.iter().copied(),
+                    SHAPE,
+                    "a shape entry",
+                    "a shape of zeros says nothing of its mode",
+                )?;
                 s.clone()
             }
         };
         shapes.push(shape);
-        let w = finite(|| format!("modes[{j}].weight"), mode.weight.unwrap_or(1.0))?;
-        if w <= 0.0 {
-            return Err(InputError::invalid(
-                "invalid_value",
-                format!("modes[{j}].weight"),
-                "a weight must be greater than 0",
-            ));
-        }
+        let w = within(
+            || format!("modes[{j}].weight"),
+            mode.weight.unwrap_or(1.0),
+            WEIGHT,
+            "a mode's weight",
+        )?;
         weights.push(w);
     }
     let init = req.initial.clone().unwrap_or_default();

@@ -9,20 +9,11 @@ use crate::balancing::InputError;
 /// Eigenpairs in ascending order of `ω²`; shapes with `φᵀ M φ = 1`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Modes {
-    /// `ω²`, 1/s² (negative when `K` is not positive semi-definite).
+    /// `ω²`, 1/s² (negative when `K` is not positive semi-definite;
+    /// `ranges::frequencies` refuses those).
     pub w2: Vec<f64>,
     /// Columns: the shapes.
     pub shapes: DMatrix<f64>,
-}
-
-impl Modes {
-    /// Natural frequencies in Hz (a negative `ω²` shows as 0 Hz).
-    pub fn frequencies_hz(&self) -> Vec<f64> {
-        self.w2
-            .iter()
-            .map(|&x| x.max(0.0).sqrt() / std::f64::consts::TAU)
-            .collect()
-    }
 }
 
 /// Solve `K φ = ω² M φ` for symmetric `K` and symmetric positive-definite `M`.

@@ -11,4 +11,6 @@ mod api;
 mod decay;
 mod errors;
 mod model;
+mod properties;
+mod ranges;
 mod rotor;

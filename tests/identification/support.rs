@@ -153,3 +153,17 @@ pub fn model_request() -> Value {
         "modes": [{"frequency_hz": 4.11, "shape": [0.4, 0.93]}, {"frequency_hz": 10.3, "shape": [0.66, -0.61]}]
     })
 }
+
+/// `v` with `change` applied to it.
+pub fn with(mut v: Value, change: impl FnOnce(&mut Value)) -> Value {
+    change(&mut v);
+    v
+}
+
+/// A valid `identify/rotor` request (a Jeffcott rotor at 5 speeds, no noise)
+/// with `change` applied to it.
+pub fn rotor_with(change: impl FnOnce(&mut Value)) -> Value {
+    let rotor = Jeffcott::with(100.0, 2000.0, 0.05);
+    let s = session(&[rotor], &speeds(1000.0, 3000.0, 5), Unit::UmPp, 0.0, 0);
+    with(json!({"session": s, "options": {}}), change)
+}

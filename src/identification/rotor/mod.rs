@@ -9,6 +9,11 @@
 //! `g_pk` as that of the acceleration `−ω²Z`: the instrument's phase is the
 //! phase of the quantity it measures. Each is brought to metres before the fit,
 //! so a velocity sensor's `ω` factor cannot pass for a resonance.
+//!
+//! A known `options.mass_kg` outside 1e-9 to 1e9 kg and a
+//! `cross_coupling_ratio` beyond ±10 are refused naming the option
+//! ([`super::ranges`] says why): a mass of 1e300 kg overflowed `√(cm)` and
+//! answered `no_mode` for a clean resonance.
 
 use nalgebra::DMatrix;
 use num_complex::Complex64;
@@ -19,7 +24,7 @@ pub use wire::{
 };
 
 use super::onemass::{self, Coupling, Point, Setup};
-use super::{api684, lsq};
+use super::{api684, lsq, ranges};
 use crate::balancing::model::Unit;
 use crate::balancing::solution::Warning;
 use crate::balancing::validate::Checked;
@@ -86,16 +91,20 @@ fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputE
         }
     };
     if let Some(m) = o.mass_kg {
-        if !(m.is_finite() && m > 0.0) {
-            return Err(InputError::invalid(
-                "invalid_value",
-                "options.mass_kg",
-                "a mass must be a finite number greater than 0",
-            ));
-        }
+        lsq::within(
+            || "options.mass_kg".into(),
+            m,
+            ranges::MASS,
+            "a known modal mass in kg",
+        )?;
     }
     let coupling = match (o.cross_coupling_ratio, o.cross_coupling.unwrap_or_default()) {
-        (Some(k), _) => Coupling::Tied(lsq::finite(|| "options.cross_coupling_ratio".into(), k)?),
+        (Some(k), _) => Coupling::Tied(lsq::within(
+            || "options.cross_coupling_ratio".into(),
+            k,
+            (-ranges::CROSS_COUPLING_RATIO, ranges::CROSS_COUPLING_RATIO),
+            "the cross-coupling ratio κ of q = κ·b·ω",
+        )?),
         (None, CrossCoupling::Estimated) => Coupling::Estimated,
         (None, CrossCoupling::Zero) => Coupling::Zero,
     };

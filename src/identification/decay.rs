@@ -24,8 +24,9 @@ use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::lsq::{self, finite, rms, within};
+use super::lsq::{self, finite, rms};
 use super::ranges::{self, SAMPLE};
+use crate::balancing::error::within;
 use crate::balancing::phasor::wrap_deg;
 use crate::balancing::InputError;
 

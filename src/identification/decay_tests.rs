@@ -74,11 +74,7 @@ fn a_step_outside_its_range_is_refused_naming_dt_s() {
     for dt_s in [1e300, 1e-300, 0.0, -0.1, 0.99e-9, 25.1, 1e3] {
         let err = identify(&request(oscillation(-0.05), dt_s, DampingLaw::Viscous)).unwrap_err();
         assert_eq!(err.field.as_deref(), Some("dt_s"), "{dt_s}: {err:?}");
-        assert!(
-            err.message.contains("from 1e-9 to 2.5e1"),
-            "{}",
-            err.message
-        );
+        assert!(err.message.contains("from 1e-9 to 25,"), "{}", err.message);
     }
     // At either end, an oscillation of a frequency in range: 1e5 Hz at
     // 1e-9 s (two periods in 20 000 samples), 0.0127 Hz at 25 s.

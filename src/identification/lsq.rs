@@ -93,27 +93,6 @@ pub fn finite(field: impl FnOnce() -> String, x: f64) -> Result<f64, InputError>
     }
 }
 
-/// A finite number from `lo` to `hi` or an error naming `field` and the range:
-/// the form of the residual-unbalance check's `within`
-/// (`balancing::acceptance::validate`, private there), with the numbers in
-/// exponent form so that `1e300` is not printed as 301 digits.
-pub fn within(
-    field: impl FnOnce() -> String,
-    x: f64,
-    (lo, hi): (f64, f64),
-    what: &str,
-) -> Result<f64, InputError> {
-    if x.is_finite() && (lo..=hi).contains(&x) {
-        Ok(x)
-    } else {
-        Err(InputError::invalid(
-            "invalid_value",
-            field(),
-            format!("{what} must be a finite number from {lo:e} to {hi:e}, got {x:e}"),
-        ))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -138,15 +117,5 @@ mod tests {
             "{}",
             err.message
         );
-    }
-
-    #[test]
-    fn a_number_out_of_range_is_refused_naming_its_field_and_the_range() {
-        assert_eq!(within(|| "x".into(), 2.0, (1.0, 3.0), "x"), Ok(2.0));
-        for bad in [1e-10, 4e3, f64::NAN, f64::INFINITY] {
-            let err = within(|| "a.b[1]".into(), bad, (1e-9, 1e3), "the step").unwrap_err();
-            assert_eq!(err.field.as_deref(), Some("a.b[1]"));
-            assert!(err.message.contains("from 1e-9 to 1e3"), "{}", err.message);
-        }
     }
 }

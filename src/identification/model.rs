@@ -15,8 +15,9 @@ use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::lsq::{finite, within};
+use super::lsq::finite;
 use super::ranges::{self, FREQUENCY_HZ, INITIAL, MASS, SHAPE, STIFFNESS, WEIGHT};
+use crate::balancing::error::within;
 use crate::balancing::InputError;
 
 /// Largest model accepted (degrees of freedom).

@@ -18,8 +18,7 @@
 //! against [`FREQUENCY_HZ`] too ([`frequencies`]), and refused naming the
 //! fields that produced them.
 
-use super::lsq::within;
-use crate::balancing::error::shown;
+use crate::balancing::error::{shown, within};
 use crate::balancing::InputError;
 
 /// Magnitude of a mass entry other than 0 on the diagonal (`identify/model`'s

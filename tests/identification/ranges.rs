@@ -48,14 +48,14 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
             "free-decay",
             with(free_decay_request(), |v| v["dt_s"] = json!(1e300)),
             "dt_s",
-            "from 1e-9 to 2.5e1",
+            "from 1e-9 to 25,",
         ),
         (
             "tiny step",
             "free-decay",
             with(free_decay_request(), |v| v["dt_s"] = json!(1e-300)),
             "dt_s",
-            "from 1e-9 to 2.5e1",
+            "from 1e-9 to 25,",
         ),
         (
             "huge and tiny masses",
@@ -78,14 +78,14 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
                 v["mass"]["parameters"] = json!([[[0.0, 1e300], [1e300, 0.0]]])
             }),
             "mass.parameters[0][0][1]",
-            "from 0e0 to 1e9",
+            "from 0 to 1e9",
         ),
         (
             "sample 1e150",
             "free-decay",
             with(free_decay_request(), |v| v["samples"][1] = json!(1e150)),
             "samples[1]",
-            "from 0e0 to 1e12",
+            "from 0 to 1e12",
         ),
         (
             "stiffness 1e300",
@@ -116,28 +116,28 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
                 v["stiffness"]["parameters"][1][1][0] = json!(-1e13)
             }),
             "stiffness.parameters[1][0][1]",
-            "from 0e0 to 1e12",
+            "from 0 to 1e12",
         ),
         (
             "frequency 1e10: dropped",
             "model",
             model(|v| v["modes"][0]["frequency_hz"] = json!(1e10)),
             "modes[0].frequency_hz",
-            "from 1e-2 to 1e5",
+            "from 0.01 to 100000,",
         ),
         (
             "frequency 1e-10",
             "model",
             model(|v| v["modes"][1]["frequency_hz"] = json!(1e-10)),
             "modes[1].frequency_hz",
-            "from 1e-2 to 1e5",
+            "from 0.01 to 100000,",
         ),
         (
             "weight 1e-300: dropped",
             "model",
             model(|v| v["modes"][0]["weight"] = json!(1e-300)),
             "modes[0].weight",
-            "from 1e-3 to 1e3",
+            "from 0.001 to 1000,",
         ),
         (
             "shape of zeros: dropped",
@@ -158,14 +158,14 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
             "model",
             model(|v| v["modes"][0]["shape"][1] = json!(1e300)),
             "modes[0].shape[1]",
-            "from 0e0 to 1e6",
+            "from 0 to 1000000,",
         ),
         (
             "initial 1e300",
             "model",
             model(|v| v["initial"] = json!({"stiffness_parameters": [1.0, -1e300]})),
             "initial.stiffness_parameters[1]",
-            "from 0e0 to 1e15",
+            "from 0 to 1e15",
         ),
         (
             "rotor mass 1e300: no_mode",
@@ -186,7 +186,7 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
             "rotor",
             rotor_with(|v| v["options"]["cross_coupling_ratio"] = json!(1e10)),
             "options.cross_coupling_ratio",
-            "from -1e1 to 1e1",
+            "from -10 to 10,",
         ),
     ];
     let (_dir, server, client) = fresh_server().await;

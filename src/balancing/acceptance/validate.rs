@@ -4,7 +4,7 @@
 //! phases for every reading or for none. Each refusal names its field.
 
 use super::{ResidualRequest, DEFAULT_AMPLITUDE_NOISE_PCT, DEFAULT_PHASE_NOISE_DEG};
-use crate::balancing::error::{shown, InputError};
+use crate::balancing::error::{shown, within, InputError};
 use crate::balancing::model::Conventions;
 use crate::balancing::phasor::weight_angle_in;
 use crate::balancing::validate::{
@@ -54,23 +54,6 @@ const AMPLITUDE: (f64, f64) = (MIN_AMPLITUDE, MAX_AMPLITUDE);
 /// Smallest repeatability, percent or degrees: the misfits are divided by it.
 const MIN_NOISE: f64 = 1e-6;
 
-fn within(field: &str, x: f64, (lo, hi): (f64, f64), what: &str) -> Result<f64, InputError> {
-    if x.is_finite() && (lo..=hi).contains(&x) {
-        Ok(x)
-    } else {
-        Err(InputError::invalid(
-            "invalid_value",
-            field,
-            format!(
-                "{what} must be a finite number from {} to {}, got {}",
-                shown(lo),
-                shown(hi),
-                shown(x)
-            ),
-        ))
-    }
-}
-
 fn angle(field: String, x: f64) -> Result<f64, InputError> {
     if x.is_finite() && x.abs() <= MAX_ANGLE_DEG {
         Ok(x)
@@ -85,7 +68,7 @@ fn angle(field: String, x: f64) -> Result<f64, InputError> {
 
 fn noise(field: &str, x: Option<f64>, default: f64, max: f64) -> Result<f64, InputError> {
     within(
-        field,
+        || field.into(),
         x.unwrap_or(default),
         (MIN_NOISE, max),
         "the repeatability",
@@ -103,21 +86,21 @@ pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
             ));
         }
     }
-    within("speed_rpm", req.speed_rpm, SPEED_RPM, "the speed")?;
+    within(|| "speed_rpm".into(), req.speed_rpm, SPEED_RPM, "the speed")?;
     within(
-        "journal_load_kg",
+        || "journal_load_kg".into(),
         req.journal_load_kg,
         JOURNAL_LOAD_KG,
         "the journal load",
     )?;
     let mass = within(
-        "trial.mass_g",
+        || "trial.mass_g".into(),
         req.trial.mass_g,
         TRIAL_MASS_G,
         "the trial mass",
     )?;
     let radius = within(
-        "trial.radius_mm",
+        || "trial.radius_mm".into(),
         req.trial.radius_mm,
         TRIAL_RADIUS_MM,
         "the trial radius",

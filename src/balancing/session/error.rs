@@ -82,6 +82,34 @@ pub fn shown(x: f64) -> String {
     }
 }
 
+/// `x` when it is finite and from `lo` to `hi`, else a value error at
+/// `field` (built only then: callers name matrix entries in loops) saying
+/// "`what` must be a finite number from `lo` to `hi`, got `x`" in [`shown`]'s
+/// form. The one range check of the residual-unbalance request and of the
+/// identification endpoints, which had a copy each differing only in how
+/// they printed the numbers.
+pub fn within(
+    field: impl FnOnce() -> String,
+    x: f64,
+    (lo, hi): (f64, f64),
+    what: &str,
+) -> Result<f64, InputError> {
+    if x.is_finite() && (lo..=hi).contains(&x) {
+        Ok(x)
+    } else {
+        Err(InputError::invalid(
+            "invalid_value",
+            field(),
+            format!(
+                "{what} must be a finite number from {} to {}, got {}",
+                shown(lo),
+                shown(hi),
+                shown(x)
+            ),
+        ))
+    }
+}
+
 /// Parse JSON into `T`, turning serde's error into an [`InputError`] whose
 /// `field` is the path of the offending value (for an unknown field, the path of
 /// the unknown field itself, so that `phase_dg` is named).
@@ -293,5 +321,16 @@ mod tests {
         assert_eq!(shown(0.0), "0");
         assert_eq!(shown(123456789.0), "123456789");
         assert_eq!(shown(f64::INFINITY), "inf");
+    }
+
+    #[test]
+    fn a_number_out_of_range_is_refused_naming_its_field_and_the_range() {
+        assert_eq!(within(|| "x".into(), 2.0, (1.0, 3.0), "x"), Ok(2.0));
+        for (bad, got) in [(1e-10, "1e-10"), (4e3, "4000"), (f64::NAN, "NaN")] {
+            let err = within(|| "a.b[1]".into(), bad, (1e-9, 1e3), "the step").unwrap_err();
+            assert_eq!(err.field.as_deref(), Some("a.b[1]"));
+            let want = format!("the step must be a finite number from 1e-9 to 1000, got {got}");
+            assert_eq!(err.message, want);
+        }
     }
 }

@@ -25,6 +25,7 @@ pub use wire::{
 
 use super::onemass::{self, Coupling, Point, Setup};
 use super::{api684, lsq, ranges};
+use crate::balancing::error::within;
 use crate::balancing::model::Unit;
 use crate::balancing::solution::Warning;
 use crate::balancing::validate::Checked;
@@ -91,7 +92,7 @@ fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputE
         }
     };
     if let Some(m) = o.mass_kg {
-        lsq::within(
+        within(
             || "options.mass_kg".into(),
             m,
             ranges::MASS,
@@ -99,7 +100,7 @@ fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputE
         )?;
     }
     let coupling = match (o.cross_coupling_ratio, o.cross_coupling.unwrap_or_default()) {
-        (Some(k), _) => Coupling::Tied(lsq::within(
+        (Some(k), _) => Coupling::Tied(within(
             || "options.cross_coupling_ratio".into(),
             k,
             (-ranges::CROSS_COUPLING_RATIO, ranges::CROSS_COUPLING_RATIO),

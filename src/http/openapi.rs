@@ -101,7 +101,7 @@ const EDGE_ANSWERS: &[(&str, &str, Scope)] = &[
     ("414", "Request target over 8 KiB", Scope::Every),
     (
         "415",
-        "A request body without Content-Type: application/json",
+        "A request body without Content-Type: application/json, or with a Content-Encoding other than identity (bodies are not decompressed)",
         Scope::Body,
     ),
     (

@@ -22,7 +22,10 @@ pub struct MalformedJson(pub ErrorBody);
 pub enum BodyRefused {
     #[response(status = 413, description = "Body over the limit")]
     TooLarge(ErrorBody),
-    #[response(status = 415, description = "Not application/json")]
+    #[response(
+        status = 415,
+        description = "Not application/json, or a Content-Encoding other than identity"
+    )]
     NotJson(ErrorBody),
 }
 

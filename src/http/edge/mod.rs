@@ -101,7 +101,7 @@ fn is_form_file(path: &str) -> bool {
 }
 
 /// The answer to a request refused at the edge, in the order: protocol limits,
-/// `Host`, token, content type, announced length.
+/// `Host`, token, content type and encoding, announced length.
 fn refusal(guard: &Guard, req: &Request) -> Option<Response> {
     let path = req.uri().path();
     let api = path.starts_with("/api/");
@@ -116,19 +116,18 @@ fn refusal(guard: &Guard, req: &Request) -> Option<Response> {
     if let Some(refused) = access::refusal(&guard.edge.tokens, req.headers(), req.method(), path) {
         return Some(refused);
     }
-    api_body_checks(guard, req)
-        .err()
-        .map(IntoResponse::into_response)
+    api_body_checks(guard, req).err()
 }
 
-fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), ApiError> {
+fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), Response> {
     let headers = req.headers();
     // A cross-site page can send a "simple" request (no preflight) only as
     // text/plain, a form encoding or without a body: requiring JSON here
     // means no page elsewhere can change the store through a visitor's browser.
     // DELETE is never simple, so the browser asks first and gets no CORS answer.
     if matches!(*req.method(), Method::POST | Method::PUT | Method::PATCH) {
-        crate::http::extract::check_content_type(headers)?;
+        crate::http::extract::check_content_type(headers).map_err(IntoResponse::into_response)?;
+        check_content_encoding(headers)?;
     }
     // Refuse a body announced over the limit now, not after reading it.
     let declared = headers
@@ -144,7 +143,43 @@ fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), ApiError> {
                 declared.unwrap_or_default(),
                 guard.body_limit
             ),
-        ));
+        )
+        .into_response());
+    }
+    Ok(())
+}
+
+/// Bodies are read as sent: the service decompresses none (tower-http's
+/// `decompression-gzip` needs crates that are not in `Cargo.lock`). A gzip
+/// body used to be read as JSON and refused as malformed, naming no cause;
+/// now any coding but `identity` is refused with 415 naming
+/// `Content-Encoding`, with `Accept-Encoding: identity` as RFC 7694 asks,
+/// before the body is read.
+fn check_content_encoding(headers: &header::HeaderMap) -> Result<(), Response> {
+    for value in headers.get_all(header::CONTENT_ENCODING) {
+        let text = value.to_str().unwrap_or("(not ASCII)");
+        // Visible ASCII: any byte is a character boundary.
+        let text = &text[..text.len().min(64)];
+        let identity = text
+            .split(',')
+            .map(str::trim)
+            .all(|coding| coding.is_empty() || coding.eq_ignore_ascii_case("identity"));
+        if !identity {
+            let mut refused = ApiError::new(
+                StatusCode::UNSUPPORTED_MEDIA_TYPE,
+                "unsupported_media_type",
+                format!(
+                    "the body must be sent uncompressed: Content-Encoding '{text}' is not accepted (leave the header out, or send identity)"
+                ),
+            )
+            .with_field("Content-Encoding")
+            .into_response();
+            refused.headers_mut().insert(
+                header::ACCEPT_ENCODING,
+                header::HeaderValue::from_static("identity"),
+            );
+            return Err(refused);
+        }
     }
     Ok(())
 }

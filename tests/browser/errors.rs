@@ -232,10 +232,21 @@ async fn typed_numbers_are_accepted_or_refused_as_the_table_says(stand: &Stand) 
         (
             "2.5",
             "positions",
-            Err("a whole number of places, 2 or more"),
+            Err("a whole number of places, 2 to 360"),
         ),
-        ("1", "positions", Err("a whole number of places, 2 or more")),
+        ("1", "positions", Err("a whole number of places, 2 to 360")),
+        ("361", "positions", Err("a whole number of places, 2 to 360")),
         ("0", "speed", Err("speed in rpm, more than 0")),
+        // Over the top of a range the message says the top, not the bottom.
+        (
+            "2e6",
+            "amplitude",
+            Err("amplitude must be less than 1000000 (check the unit)"),
+        ),
+        ("2e6", "mass", Err("mass in grams, less than 1000000")),
+        ("2e6", "speed", Err("speed in rpm, less than 1000000")),
+        ("0", "rotor_mass", Err("rotor mass in kg, more than 0")),
+        ("500", "rotor_mass", Ok(500.0)),
     ];
     let cases: Vec<Value> = table
         .iter()

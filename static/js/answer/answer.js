@@ -4,9 +4,9 @@
 // prediction, and the pictures. The report reuses the parts.
 
 import { h } from "../page/dom.js";
-import { fmt, fmtAngle } from "../page/num.js";
+import { fmt, fmtAngle, commonUnit, unitLabel } from "../page/num.js";
 import { state } from "../job/state.js";
-import { correctionsTable, summaryBox, residualTable, warningsBox } from "../steps/solve.js";
+import { correctionsTable, summaryBox, residualTable, warningsBox, phaseWords } from "../steps/solve.js";
 import { doubt } from "./words.js";
 import { planePicture } from "./planes.js";
 import { plotsSection } from "../plots/plots.js";
@@ -24,9 +24,11 @@ export function verdict(sol) {
   const max = sol.summary ? sol.summary.max_before : null;
   if (!limit || max === null || !run) return "";
   const ok = max <= limit;
+  const unit = commonUnit(sol.predicted_residual);
+  const u = unit ? ` ${unit}` : "";
   return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
-    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}, at or below the limit of ${fmt(limit, 1)}. No more weights are needed.`
-      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}, above the limit of ${fmt(limit, 1)}. Fit the weights below and do a check run.`);
+    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, at or below the limit of ${fmt(limit, 1)}${u}. No more weights are needed.`
+      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, above the limit of ${fmt(limit, 1)}${u}. Fit the weights below and do a check run.`);
 }
 
 /** "Add 4.2 g at 250° to what is on now, or replace the weights in this plane by …" */
@@ -41,12 +43,19 @@ export function trimWords(sol) {
       c.total ? `, or replace the weights in this plane by one weight of ${fmt(c.total.mass_g, 1)} g at ${fmtAngle(c.total.angle_deg)}.` : "."))));
 }
 
+/** The unit of a sensor of the set-up, in words. */
+function unitOf(sensor) {
+  const x = state.setup.sensors.find((s) => s.id === sensor);
+  return x ? unitLabel(x.unit) : "";
+}
+
 function checkRow(r) {
   return h("tr", {},
     h("td", {}, fmt(r.speed_rpm, 0)), h("td", {}, r.sensor),
     h("td", { class: "measured" }, `${fmt(r.measured, 1)} at ${fmtAngle(r.measured_phase_deg)}`),
     h("td", { class: "predicted" }, `${fmt(r.predicted, 1)} at ${fmtAngle(r.predicted_phase_deg)}`),
-    h("td", {}, `≤ ${fmt(r.amplitude_95, 1)}`));
+    h("td", {}, `≤ ${fmt(r.amplitude_95, 1)}`),
+    h("td", { class: "unit" }, unitOf(r.sensor)));
 }
 
 /** Each check run (any run the others predict) beside its prediction. */
@@ -59,7 +68,7 @@ export function runChecks(sol) {
         ? `agrees with what the other runs predict for its weights (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted).`
         : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted). Check its weights and readings.`),
       h("div", { class: "scroll" }, h("table", { class: "check-table" },
-        h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Measured"), h("th", {}, "Predicted"), h("th", {}, "95 % bound"))),
+        h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, `Measured, at phase ${phaseWords(sol)}`), h("th", {}, `Predicted, at phase ${phaseWords(sol)}`), h("th", {}, "95 % bound"), h("th", {}, "Unit"))),
         h("tbody", {}, c.rows.map(checkRow)))))));
 }
 

@@ -22,18 +22,21 @@ export function parseNumber(text) {
 
 /** Rules for each kind of numeric field: the check and its message. */
 export const RULES = {
-  amplitude: { test: (x) => x >= 0 && x < 1e6, message: "amplitude must be 0 or more" },
+  amplitude: { test: (x) => x >= 0 && x < 1e6, message: (x) => (x < 0 ? "amplitude must be 0 or more" : "amplitude must be less than 1000000 (check the unit)") },
   phase: { test: (x) => x >= 0 && x <= 360, message: (x) => `phase in degrees, 0 to 360: ${turnWords(x)}` },
   angle: { test: (x) => x >= 0 && x <= 360, message: (x) => `angle in degrees, 0 to 360: ${turnWords(x)}` },
-  mass: { test: (x) => x > 0 && x < 1e6, message: "mass in grams, more than 0" },
-  radius: { test: (x) => x > 0 && x < 1e5, message: "radius in mm, more than 0" },
+  mass: { test: (x) => x > 0 && x < 1e6, message: (x) => (x <= 0 ? "mass in grams, more than 0" : "mass in grams, less than 1000000") },
+  radius: { test: (x) => x > 0 && x < 1e5, message: (x) => (x <= 0 ? "radius in mm, more than 0" : "radius in mm, less than 100000") },
+  // The rotor's mass is in kilograms (the service takes up to 10^7 kg); it
+  // was checked by the radius rule and refused as "radius in mm".
+  rotor_mass: { test: (x) => x > 0 && x < 1e7, message: (x) => (x <= 0 ? "rotor mass in kg, more than 0" : "rotor mass in kg, less than 10000000") },
   positions: {
     test: (x) => Number.isInteger(x) && x >= 2 && x <= 360,
-    message: "a whole number of places, 2 or more",
+    message: "a whole number of places, 2 to 360",
   },
-  speed: { test: (x) => x > 0 && x < 1e6, message: "speed in rpm, more than 0" },
+  speed: { test: (x) => x > 0 && x < 1e6, message: (x) => (x <= 0 ? "speed in rpm, more than 0" : "speed in rpm, less than 1000000") },
   noise: { test: (x) => x > 0 && x < 100, message: "more than 0 and less than 100" },
-  limit: { test: (x) => x > 0 && x < 1e6, message: "a vibration level, more than 0" },
+  limit: { test: (x) => x > 0 && x < 1e6, message: (x) => (x <= 0 ? "a vibration level, more than 0" : "a vibration level, less than 1000000") },
 };
 
 /** Check typed text against a rule; `{ value }`, `{ empty }` or `{ error }`. */
@@ -96,12 +99,32 @@ export function angleDiff(a, b) {
   return d > 180 ? 360 - d : d;
 }
 
-/** A number for people: `digits` decimals, or fewer significant ones for big values. */
+/**
+ * A number for people: `digits` decimals, or fewer significant ones for big
+ * values; below 0.1 (readings in in/s or g) two significant digits, up to
+ * three decimals more, so that 0.085 is not shown as 0.09 nor 0.004 as 0.00.
+ * A value that rounds to zero even so keeps `digits` + 1 decimals.
+ */
 export function fmt(x, digits = 1) {
   if (x === null || x === undefined || !Number.isFinite(x)) return "–";
   const abs = Math.abs(x);
   const d = abs >= 1000 ? 0 : abs >= 100 ? Math.min(digits, 1) : abs > 0 && abs < 1 ? digits + 1 : digits;
+  if (abs > 0 && abs < 0.1) {
+    const small = Math.min(digits + 3, Math.max(d, 1 - Math.floor(Math.log10(abs))));
+    if (Number(x.toFixed(small)) !== 0) return x.toFixed(small);
+  }
   return x.toFixed(d);
+}
+
+/**
+ * A stored reading as it was typed: up to four significant digits (the
+ * analyser's own), trailing zeros dropped, so 212.4 reads 212.4 and 0.085
+ * reads 0.085 (the grid showed them as 212 and 0.09).
+ */
+export function fmtReading(x) {
+  if (x === null || x === undefined || !Number.isFinite(x)) return "–";
+  if (Math.abs(x) >= 1e4) return x.toFixed(0);
+  return String(Number(x.toPrecision(4)));
 }
 
 /** An angle for people, 0 to 360 with one decimal. */
@@ -124,4 +147,10 @@ export const UNITS = {
 
 export function unitLabel(unit) {
   return UNITS[unit] || unit || "";
+}
+
+/** The one unit all these rows share, in words; "" when they mix units (or there are none). */
+export function commonUnit(rows) {
+  const units = new Set((rows || []).map((r) => r.unit).filter(Boolean));
+  return units.size === 1 ? unitLabel([...units][0]) : "";
 }

@@ -3,8 +3,9 @@
 // a new job with the set-up of its last one, and a trim job from its stored
 // coefficients that needs only a reference run.
 
-import { h, s, replace } from "../page/dom.js";
-import { banner, textInput, numberInput } from "../page/fields.js";
+import { h, s, replace, $ } from "../page/dom.js";
+import { banner, textInput, numberInput, selectInput, markServerError, clearMarks } from "../page/fields.js";
+import { checkRotor, GRADE_CHOICES } from "./setup.js";
 import { fmt } from "../page/num.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
@@ -112,16 +113,23 @@ function newMachineForm(root, go) {
   return h("fieldset", { class: "new-machine" }, h("legend", {}, "New machine"),
     h("label", {}, "Id ", textInput({ field: "machine.id", value: "", required: true, label: "Machine id", placeholder: "e.g. ID-FAN-3", size: 14, maxlength: 64, onValue: (v) => (m.id = v) })),
     h("label", {}, "Name ", textInput({ field: "machine.name", value: "", label: "Machine name", size: 20, onValue: (v) => (m.name = v) })),
-    h("label", {}, "Rotor mass, kg ", numberInput({ field: "machine.rotor.mass_kg", kind: "radius", value: null, required: false, label: "Rotor mass, kg", onValue: (v) => (m.mass = v) })),
+    h("label", {}, "Rotor mass, kg ", numberInput({ field: "machine.rotor.mass_kg", kind: "rotor_mass", value: null, required: false, label: "Rotor mass, kg", onValue: (v) => (m.mass = v) })),
     h("label", {}, "Service speed, rpm ", numberInput({ field: "machine.rotor.service_speed_rpm", kind: "speed", value: null, required: false, label: "Service speed, rpm", onValue: (v) => (m.speed = v) })),
+    h("label", {}, "Balance grade ", selectInput({ field: "machine.rotor.balance_grade", value: "", choices: GRADE_CHOICES, label: "Balance grade", onValue: (v) => (m.grade = v) })),
     h("button", { type: "button", class: "create-machine", onclick: async () => {
+      clearMarks(root);
       if (!m.id) return banner(root, "error", "Give the machine an id (the name on its plate, e.g. ID-FAN-3).");
       const body = { id: m.id, name: m.name || m.id };
-      if (m.mass && m.speed) body.rotor = { mass_kg: m.mass, service_speed_rpm: m.speed };
+      // Mass and speed were sent without the grade the service requires (every
+      // such machine was refused), and one of them alone was dropped unsaid.
+      const rotor = { mass_kg: m.mass, service_speed_rpm: m.speed, balance_grade: m.grade };
+      if (!checkRotor(root, rotor, "machine.")) return banner(root, "error", "Give the rotor's mass, service speed and balance grade, or none of them. Nothing was stored.");
+      if (m.mass) body.rotor = rotor;
       try {
         await api.createMachine(body);
         go.showMachine(m.id);
       } catch (err) {
+        if (err.status !== 409 && markServerError(err, "machine.")) return banner(root, "error", "Not stored: the field is marked.");
         banner(root, "error", err.status === 409 ? `A machine called ${m.id} exists already.` : `Not stored: ${err.message}`);
       }
     } }, "Store machine"));

@@ -5,7 +5,7 @@
 
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "../page/fields.js";
-import { fmt, unitLabel, DECIMAL_RULE } from "../page/num.js";
+import { fmt, fmtReading, unitLabel, DECIMAL_RULE } from "../page/num.js";
 import { api, ApiError } from "../job/api.js";
 import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
@@ -232,7 +232,8 @@ function grid(rerender) {
           ];
         }
         const reading = readingFor(c.run, row);
-        return [h("td", { class: "value amp" }, reading ? fmt(reading.amplitude, 1) : "–"), h("td", { class: "value phase" }, reading ? fmt(reading.phase_deg, 0) : "–")];
+        // As typed (fmtReading), not rounded: the technician compares them with the analyser.
+        return [h("td", { class: "value amp" }, reading ? fmtReading(reading.amplitude) : "–"), h("td", { class: "value phase" }, reading ? fmtReading(reading.phase_deg) : "–")];
       }),
     ))),
   ));

@@ -8,6 +8,9 @@ import { parseSpeeds, UNITS, SPEEDS_RULE, DECIMAL_RULE, check } from "../page/nu
 import { conventionsPicture } from "./picture.js";
 import { state, setupLocked } from "../job/state.js";
 
+/** ISO 21940-11 grades offered, and none (no rotor data). */
+export const GRADE_CHOICES = [["", "none"], ...["G0.4", "G1", "G2.5", "G6.3", "G16", "G40"].map((g) => [g, g])];
+
 const PHASES = [
   ["lag", "Phase lag (most analysers)"],
   ["lead", "Phase lead"],
@@ -70,9 +73,32 @@ function listInput({ field, kind, value, label, placeholder, disabled, onValue, 
 function rotorFields(setup, locked) {
   const r = setup.rotor || (setup.rotor = { mass_kg: null, service_speed_rpm: null, balance_grade: "" });
   return h("fieldset", { class: "rotor" }, h("legend", {}, "Rotor (optional: for the ISO 21940-11 check and the trial-weight size)"),
-    h("label", {}, h("span", {}, "Mass, kg"), numberInput({ field: "rotor.mass_kg", kind: "radius", value: r.mass_kg, required: false, label: "Rotor mass, kg", disabled: locked, onValue: (v) => (r.mass_kg = v) })),
+    h("label", {}, h("span", {}, "Mass, kg"), numberInput({ field: "rotor.mass_kg", kind: "rotor_mass", value: r.mass_kg, required: false, label: "Rotor mass, kg", disabled: locked, onValue: (v) => (r.mass_kg = v) })),
     h("label", {}, h("span", {}, "Service speed, rpm"), numberInput({ field: "rotor.service_speed_rpm", kind: "speed", value: r.service_speed_rpm, required: false, label: "Service speed, rpm", disabled: locked, onValue: (v) => (r.service_speed_rpm = v) })),
-    h("label", {}, h("span", {}, "Balance grade"), selectInput({ field: "rotor.balance_grade", value: r.balance_grade || "", choices: [["", "none"], ...["G0.4", "G1", "G2.5", "G6.3", "G16", "G40"].map((g) => [g, g])], label: "Balance grade", disabled: locked, onValue: (v) => (r.balance_grade = v) })));
+    h("label", {}, h("span", {}, "Balance grade"), selectInput({ field: "rotor.balance_grade", value: r.balance_grade || "", choices: GRADE_CHOICES, label: "Balance grade", disabled: locked, onValue: (v) => (r.balance_grade = v) })));
+}
+
+/**
+ * The rotor is all three of mass, service speed and grade, or none: the
+ * service refuses a rotor without its grade (missing_field), and the form
+ * left out a rotor without its speed without a word. The missing ones are marked.
+ */
+export function checkRotor(root, rotor, prefix = "") {
+  if (!rotor) return true;
+  const parts = [
+    ["mass_kg", rotor.mass_kg, "the rotor's mass, kg"],
+    ["service_speed_rpm", rotor.service_speed_rpm, "the service speed, rpm"],
+    ["balance_grade", rotor.balance_grade, "the balance grade"],
+  ];
+  const given = (v) => v !== null && v !== undefined && v !== "";
+  if (!parts.some(([, v]) => given(v))) return true;
+  let ok = true;
+  for (const [key, v, words] of parts) {
+    if (given(v)) continue;
+    mark($(`[data-field="${prefix}rotor.${key}"]`, root), `${words}: needed with the rest of the rotor data (or leave all three empty)`);
+    ok = false;
+  }
+  return ok;
 }
 
 /** Ids must be unique within planes and within sensors; mark the repeats. */
@@ -171,7 +197,7 @@ export function renderSetup(root, next) {
         onclick: () => {
           if (locked) return next();
           clearMarks(root);
-          const ok = validateAll(root) && checkUnique(root, setup.planes, "planes") && checkUnique(root, setup.sensors, "sensors");
+          const ok = validateAll(root) && checkUnique(root, setup.planes, "planes") && checkUnique(root, setup.sensors, "sensors") && checkRotor(root, setup.rotor);
           if (ok) next();
           else banner(root, "error", "Some fields need attention; they are marked in red.");
         },

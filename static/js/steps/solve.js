@@ -4,7 +4,7 @@
 
 import { h, replace } from "../page/dom.js";
 import { banner, markServerError } from "../page/fields.js";
-import { fmt, fmtAngle, angleDiff, unitLabel } from "../page/num.js";
+import { fmt, fmtAngle, angleDiff, unitLabel, commonUnit } from "../page/num.js";
 import { api } from "../job/api.js";
 import { state, changed } from "../job/state.js";
 import { plainWarning, doubt, UNBIASED_WORDS } from "../answer/words.js";
@@ -72,9 +72,14 @@ function negligible(r) {
   return r.amplitude <= 1e-9 * Math.max(r.amplitude_before || 0, 1e-300);
 }
 
+/** "(lag)" or "(lead)": the phase convention the answer's phases are in. */
+export function phaseWords(solution) {
+  return ((solution.conventions || state.setup.conventions).phase === "lead") ? "(lead)" : "(lag)";
+}
+
 export function residualTable(solution) {
   return h("table", { class: unsure(solution) ? "residual unsure" : "residual" },
-    h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, "Phase"), h("th", {}, "Unit"))),
+    h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, `Phase, ° ${phaseWords(solution)}`), h("th", {}, "Unit"))),
     h("tbody", {}, solution.predicted_residual.map((r) => h("tr", { class: r.used === false ? "unused" : "" },
       h("td", {}, fmt(r.speed_rpm, 0)),
       h("td", {}, r.sensor),
@@ -100,10 +105,13 @@ export function summaryBox(solution) {
   const sm = solution.summary;
   const cut = sm.rms_before > 0 ? 100 * (1 - sm.rms_after / sm.rms_before) : 0;
   const doubtful = unsure(solution);
+  // The unit the figures are in, when every sensor has the same one (the RMS of mixed units has none).
+  const unit = commonUnit(solution.predicted_residual);
+  const inUnit = unit ? `, ${unit}` : "";
   return h("div", { class: doubtful ? "summary unsure" : "summary" },
     doubtful ? h("p", { class: "unsure-note" }, "Not to be trusted: the vibration after and the reduction below assume the corrections above are right, and the greyed ones may be far off. Do what is said under them first (a bigger trial weight, or a check run and a trim).") : "",
-    h("div", { class: "big" }, h("span", { class: "label" }, "RMS over sensors"), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.rms_after, 1)}`)),
-    h("div", { class: "big" }, h("span", { class: "label" }, "Largest"), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.max_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, `RMS over sensors${inUnit}`), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.rms_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, `Largest${inUnit}`), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.max_after, 1)}`)),
     h("div", { class: "big" }, h("span", { class: "label" }, doubtful ? "Reduction, if the corrections were right" : "Reduction"), h("span", { class: "value" }, `${fmt(cut, 0)} %`)),
     h("div", { class: "small" }, `Condition number ${fmt(solution.condition_number, 1)}`),
     solution.iso_21940 ? h("div", { class: "small" }, `ISO 21940-11 ${solution.iso_21940.balance_grade}: permissible ${fmt(solution.iso_21940.permissible_per_plane_gmm, 0)} g·mm per plane`) : "",

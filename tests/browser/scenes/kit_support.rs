@@ -9,7 +9,8 @@ use crate::harness::steps::js;
 use crate::harness::Browser;
 
 /// A number as the page writes it (num.js `fmt`): `digits` decimals, one more
-/// below 1, at most one from 100 and none from 1000.
+/// below 1, at most one from 100 and none from 1000; below 0.1 two
+/// significant digits, at most `digits` + 3 decimals, unless that rounds to 0.
 pub fn fmt(x: f64, digits: usize) -> String {
     let a = x.abs();
     let d = if a >= 1000.0 {
@@ -21,6 +22,14 @@ pub fn fmt(x: f64, digits: usize) -> String {
     } else {
         digits
     };
+    if a > 0.0 && a < 0.1 {
+        let wanted = (1 - a.log10().floor() as i64).max(d as i64) as usize;
+        let small = wanted.min(digits + 3);
+        let text = format!("{x:.small$}");
+        if text.parse::<f64>().is_ok_and(|v| v != 0.0) {
+            return text;
+        }
+    }
     format!("{x:.d$}")
 }
 

@@ -116,20 +116,26 @@ fn refusal(guard: &Guard, req: &Request) -> Option<Response> {
     if let Some(refused) = access::refusal(&guard.edge.tokens, req.headers(), req.method(), path) {
         return Some(refused);
     }
-    api_body_checks(guard, req).err()
-}
-
-fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), Response> {
     let headers = req.headers();
     // A cross-site page can send a "simple" request (no preflight) only as
     // text/plain, a form encoding or without a body: requiring JSON here
     // means no page elsewhere can change the store through a visitor's browser.
     // DELETE is never simple, so the browser asks first and gets no CORS answer.
     if matches!(*req.method(), Method::POST | Method::PUT | Method::PATCH) {
-        crate::http::extract::check_content_type(headers).map_err(IntoResponse::into_response)?;
-        check_content_encoding(headers)?;
+        if let Err(e) = crate::http::extract::check_content_type(headers) {
+            return Some(e.into_response());
+        }
+        if let Some(refused) = encoding_refusal(headers) {
+            return Some(refused);
+        }
     }
-    // Refuse a body announced over the limit now, not after reading it.
+    announced_length(guard, headers)
+        .err()
+        .map(IntoResponse::into_response)
+}
+
+/// Refuse a body announced over the limit now, not after reading it.
+fn announced_length(guard: &Guard, headers: &header::HeaderMap) -> Result<(), ApiError> {
     let declared = headers
         .get(header::CONTENT_LENGTH)
         .and_then(|v| v.to_str().ok())
@@ -143,8 +149,7 @@ fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), Response> {
                 declared.unwrap_or_default(),
                 guard.body_limit
             ),
-        )
-        .into_response());
+        ));
     }
     Ok(())
 }
@@ -155,31 +160,32 @@ fn api_body_checks(guard: &Guard, req: &Request) -> Result<(), Response> {
 /// now any coding but `identity` is refused with 415 naming
 /// `Content-Encoding`, with `Accept-Encoding: identity` as RFC 7694 asks,
 /// before the body is read.
-fn check_content_encoding(headers: &header::HeaderMap) -> Result<(), Response> {
+fn encoding_refusal(headers: &header::HeaderMap) -> Option<Response> {
     for value in headers.get_all(header::CONTENT_ENCODING) {
         let text = value.to_str().unwrap_or("(not ASCII)");
-        // Visible ASCII: any byte is a character boundary.
-        let text = &text[..text.len().min(64)];
         let identity = text
             .split(',')
             .map(str::trim)
             .all(|coding| coding.is_empty() || coding.eq_ignore_ascii_case("identity"));
-        if !identity {
-            let mut refused = ApiError::new(
-                StatusCode::UNSUPPORTED_MEDIA_TYPE,
-                "unsupported_media_type",
-                format!(
-                    "the body must be sent uncompressed: Content-Encoding '{text}' is not accepted (leave the header out, or send identity)"
-                ),
-            )
-            .with_field("Content-Encoding")
-            .into_response();
-            refused.headers_mut().insert(
-                header::ACCEPT_ENCODING,
-                header::HeaderValue::from_static("identity"),
-            );
-            return Err(refused);
+        if identity {
+            continue;
         }
+        // Visible ASCII: any byte is a character boundary.
+        let shown = &text[..text.len().min(64)];
+        let mut refused = ApiError::new(
+            StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            "unsupported_media_type",
+            format!(
+                "the body must be sent uncompressed: Content-Encoding '{shown}' is not accepted (leave the header out, or send identity)"
+            ),
+        )
+        .with_field("Content-Encoding")
+        .into_response();
+        refused.headers_mut().insert(
+            header::ACCEPT_ENCODING,
+            header::HeaderValue::from_static("identity"),
+        );
+        return Some(refused);
     }
-    Ok(())
+    None
 }

@@ -3,13 +3,15 @@
 //! multi-speed job (16 planes, 32 sensors, 40 speeds).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use fieldbal::balancing::model::{
-    Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight,
-};
-use fieldbal::balancing::phasor::{reading_out, weight_out};
+use fieldbal::balancing::model::{Conventions, Reading, Run, Session, SolveOptions, Weight};
+use fieldbal::balancing::phasor::weight_out;
 use fieldbal::balancing::solve;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
+
+// The session builder the tests use too, included by path (not library API).
+#[path = "../tests/common/generated.rs"]
+mod generated;
 
 /// A deterministic pseudo-random number in [0, 1) (xorshift), so runs compare.
 struct Rng(u64);
@@ -39,15 +41,8 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
     let readings = |y: &DVector<Complex64>, rng: &mut Rng| -> Vec<Reading> {
         (0..rows)
             .map(|a| {
-                let (amplitude, phase_deg) = reading_out(conv, y[a] + rng.phasor(0.5));
                 let speed_rpm = 500.0 + 250.0 * (a / sensors) as f64;
-                Reading {
-                    speed_rpm,
-                    sensor: format!("S{}", a % sensors),
-                    amplitude,
-                    phase_deg,
-                    samples: None,
-                }
+                generated::reading(conv, speed_rpm, a % sensors, y[a] + rng.phasor(0.5))
             })
             .collect()
     };
@@ -70,30 +65,8 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
             readings: readings(&y, &mut rng),
         });
     }
-    Session {
-        name: format!("bench {planes}x{sensors}x{speeds}"),
-        machine: None,
-        conventions: Some(conv),
-        rotor: None,
-        planes: (0..planes)
-            .map(|j| Plane {
-                id: format!("P{j}"),
-                radius_mm: Some(150.0),
-                positions: None,
-                places_deg: None,
-                kit: None,
-            })
-            .collect(),
-        sensors: (0..sensors)
-            .map(|k| Sensor {
-                id: format!("S{k}"),
-                unit: Unit::UmPp,
-                label: None,
-            })
-            .collect(),
-        runs,
-        runout: None,
-    }
+    let name = format!("bench {planes}x{sensors}x{speeds}");
+    generated::session(name, conv, planes, Some(150.0), sensors, runs)
 }
 
 fn benches(c: &mut Criterion) {

@@ -2,15 +2,16 @@
 //! recovery, convention independence, kept vs removed trials, and the normal
 //! condition of least squares.
 
-use fieldbal::balancing::model::{
-    Conventions, Plane, Reading, Run, Sensor, Session, SolveOptions, Unit, Weight,
-};
-use fieldbal::balancing::phasor::{reading_in, reading_out, weight_in, weight_out};
+use fieldbal::balancing::model::{Conventions, Reading, Run, Session, SolveOptions, Weight};
+use fieldbal::balancing::phasor::{reading_in, weight_in, weight_out};
 use fieldbal::balancing::{solve, Solution};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use proptest::prelude::*;
 use proptest::test_runner::FileFailurePersistence;
+
+#[path = "../common/generated.rs"]
+mod generated;
 
 /// A random rotor in the internal frame: influence matrix, as-found unbalance
 /// (the correction is its negative), trial weights, and row layout.
@@ -74,14 +75,8 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
     let readings = |y: &DVector<Complex64>| -> Vec<Reading> {
         (0..y.len())
             .map(|a| {
-                let (amplitude, phase_deg) = reading_out(conv, y[a]);
-                Reading {
-                    speed_rpm: 1000.0 * (1 + a / rotor.sensors) as f64,
-                    sensor: format!("S{}", a % rotor.sensors),
-                    amplitude,
-                    phase_deg,
-                    samples: None,
-                }
+                let speed_rpm = 1000.0 * (1 + a / rotor.sensors) as f64;
+                generated::reading(conv, speed_rpm, a % rotor.sensors, y[a])
             })
             .collect()
     };
@@ -110,30 +105,14 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
             readings: readings(&(&y0 + &rotor.w * t)),
         });
     }
-    Session {
-        name: "random rotor".into(),
-        machine: None,
-        conventions: Some(conv),
-        rotor: None,
-        planes: (0..planes)
-            .map(|j| Plane {
-                id: format!("P{j}"),
-                radius_mm: None,
-                positions: None,
-                places_deg: None,
-                kit: None,
-            })
-            .collect(),
-        sensors: (0..rotor.sensors)
-            .map(|k| Sensor {
-                id: format!("S{k}"),
-                unit: Unit::UmPp,
-                label: None,
-            })
-            .collect(),
+    generated::session(
+        "random rotor".into(),
+        conv,
+        planes,
+        None,
+        rotor.sensors,
         runs,
-        runout: None,
-    }
+    )
 }
 
 /// The corrections back in the internal frame.

@@ -13,9 +13,12 @@ mod noise_options;
 mod rotor_model;
 mod undetermined;
 
+#[path = "../common/generated.rs"]
+mod generated;
+
 use fieldbal::balancing::model::{
-    AngleDirection, Conventions, PhaseConvention, Plane, Reading, Run, Sample, Sensor, Session,
-    SolveOptions, Unit, Weight,
+    AngleDirection, Conventions, PhaseConvention, Reading, Run, Sample, Session, SolveOptions,
+    Weight,
 };
 use fieldbal::balancing::phasor::{reading_out, weight_in, weight_out};
 use fieldbal::balancing::uncertainty::CHI2_2_95;
@@ -188,30 +191,8 @@ pub fn session_of(
         },
         readings: (0..y[0].len()).map(|a| reading(k, a)).collect(),
     };
-    Session {
-        name: name.into(),
-        machine: None,
-        conventions: Some(conv),
-        rotor: None,
-        planes: (0..trial.len())
-            .map(|j| Plane {
-                id: format!("P{j}"),
-                radius_mm: None,
-                positions: None,
-                places_deg: None,
-                kit: None,
-            })
-            .collect(),
-        sensors: (0..sensors)
-            .map(|s| Sensor {
-                id: format!("S{s}"),
-                unit: Unit::UmPp,
-                label: None,
-            })
-            .collect(),
-        runs: (0..y.len()).map(run).collect(),
-        runout: None,
-    }
+    let runs = (0..y.len()).map(run).collect();
+    generated::session(name.into(), conv, trial.len(), None, sensors, runs)
 }
 
 /// The reading of sensor `S{sensor}` at `speed_rpm`: phasor `y` (internal
@@ -223,12 +204,7 @@ pub fn reading_of(
     y: Complex64,
     samples: Option<&[Complex64]>,
 ) -> Reading {
-    let (amplitude, phase_deg) = reading_out(conv, y);
     Reading {
-        speed_rpm,
-        sensor: format!("S{sensor}"),
-        amplitude,
-        phase_deg,
         samples: samples.map(|zs| {
             zs.iter()
                 .map(|&z| {
@@ -240,6 +216,7 @@ pub fn reading_of(
                 })
                 .collect()
         }),
+        ..generated::reading(conv, speed_rpm, sensor, y)
     }
 }
 

@@ -3,10 +3,11 @@
 //! 212), answers without their unit or phase convention, and rotor data lost
 //! without a word — a rotor mass checked as a "radius in mm", a rotor without
 //! its grade refused by the service, a machine's rotor that could never be
-//! stored (the form had no grade field and the service requires one).
+//! stored (the form had no grade field and the service requires one), and
+//! sessions beyond the 50 newest that the list never showed.
 
 use crate::harness::form::{choose, field, type_into, value_of};
-use crate::harness::stand::{get, Stand};
+use crate::harness::stand::{example_session, get, post, Stand};
 use crate::harness::Browser;
 use serde_json::json;
 
@@ -22,6 +23,8 @@ async fn a_new_user_sees_what_was_typed_with_units_and_loses_no_rotor_data() {
     a_rotor_given_in_part_is_marked_not_dropped(&stand).await;
     stand.renew().await;
     a_machine_is_stored_with_its_rotor(&stand).await;
+    stand.renew().await;
+    every_stored_session_can_be_reached_from_the_list(&stand).await;
     stand.stop().await;
 }
 
@@ -208,4 +211,47 @@ async fn a_machine_is_stored_with_its_rotor(stand: &Stand) {
         page.contains("Rotor: 420 kg, service speed 1480 rpm, balance grade G2.5"),
         "{page}"
     );
+}
+
+async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for i in 0..53 {
+        session["name"] = json!(format!("job {i:02}"));
+        let stored = post(stand, "/api/v1/sessions", session.clone()).await;
+        assert!(stored["id"].is_string(), "{stored}");
+    }
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("#step-sessions button.more-sessions").await;
+    let names = texts(b, "#step-sessions button.open-session").await;
+    assert_eq!(names.len(), 50, "a page at a time");
+    assert_eq!(names[0], "job 52", "newest first");
+    let note = b.text("#step-sessions p.more").await;
+    assert_eq!(note, "The 50 newest of 53 stored sessions. Show 3 more");
+    b.click("#step-sessions button.more-sessions").await;
+    b.wait_until(
+        "the older sessions listed",
+        "return document.querySelectorAll('#step-sessions button.open-session').length === 53",
+    )
+    .await;
+    let names = texts(b, "#step-sessions button.open-session").await;
+    assert_eq!(names[52], "job 00", "the oldest is reachable");
+    assert_eq!(
+        b.text("#step-sessions p.more").await,
+        "",
+        "nothing more to show"
+    );
+    // And it opens.
+    b.client
+        .execute(
+            "[...document.querySelectorAll('#step-sessions button.open-session')].pop().click()",
+            vec![],
+        )
+        .await
+        .unwrap();
+    b.wait_until(
+        "the oldest session opened",
+        "return document.querySelector('#job-title').textContent === 'job 00 · stored'",
+    )
+    .await;
 }

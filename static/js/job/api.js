@@ -63,7 +63,7 @@ export function unwrapSession(data) {
 }
 
 export const api = {
-  listSessions: () => call("GET", "/sessions"),
+  listSessions: (limit = 50, offset = 0) => call("GET", `/sessions?limit=${limit}&offset=${offset}`),
   getSession: (id) => call("GET", `/sessions/${encodeURIComponent(id)}`),
   createSession: (session) => call("POST", "/sessions", session),
   deleteSession: (id) => call("DELETE", `/sessions/${encodeURIComponent(id)}`),

@@ -7,6 +7,9 @@ import { api } from "../job/api.js";
 import { state, sessionJson, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 
+/** Sessions listed at a time (the service's default page). */
+const SESSIONS_PAGE = 50;
+
 /** The list endpoint is paged; take the items whatever the wrapper is called. */
 function items(data) {
   if (Array.isArray(data)) return data;
@@ -64,6 +67,7 @@ export function resultsCsv() {
 /** Render the sessions page; `open(id)` reopens one, `imported(id)` after an import. */
 export async function renderSessions(root, open, imported) {
   const list = h("tbody", {}, h("tr", {}, h("td", { colspan: 4 }, "Loading…")));
+  const more = h("p", { class: "more" });
   const file = h("input", { type: "file", accept: "application/json,.json", class: "import-file", "aria-label": "Session JSON file" });
   file.addEventListener("change", async () => {
     const f = file.files[0];
@@ -95,18 +99,42 @@ export async function renderSessions(root, open, imported) {
     h("div", { class: "scroll" }, h("table", { class: "sessions" },
       h("thead", {}, h("tr", {}, h("th", {}, "Name"), h("th", {}, "Machine"), h("th", {}, "Stored"), h("th", {}))),
       list)),
+    more,
   );
+  const row = (x) => h("tr", {},
+    h("td", {}, h("button", { type: "button", class: "link open-session", dataset: { id: x.id }, onclick: () => open(x.id) }, x.name ?? x.id)),
+    h("td", {}, x.machine ?? ""),
+    h("td", {}, when(x.created_at), x.runs !== undefined ? h("small", {}, ` · ${x.runs} run${x.runs === 1 ? "" : "s"}`) : ""),
+    h("td", {}, h("button", { type: "button", class: "small delete", onclick: async () => {
+      if (!window.confirm(`Delete the stored session “${x.name ?? x.id}”?`)) return;
+      try { await api.deleteSession(x.id); renderSessions(root, open, imported); } catch (err) { banner(root, "error", err.message); }
+    } }, "Delete")));
+  // The service lists a page at a time (newest first): only the 50 newest
+  // were shown, and older sessions could not be reached from the form.
+  let shown = 0;
+  const page = async () => {
+    const data = await api.listSessions(SESSIONS_PAGE, shown);
+    const found = items(data);
+    shown += found.length;
+    const total = data && typeof data.total === "number" ? data.total : shown;
+    return { found, total };
+  };
+  const moreOrNot = (total) => replace(more, shown < total ? [
+    h("span", { class: "hint" }, `The ${shown} newest of ${total} stored sessions. `),
+    h("button", { type: "button", class: "small more-sessions", onclick: async () => {
+      try {
+        const next = await page();
+        list.append(...next.found.map(row));
+        moreOrNot(next.total);
+      } catch (err) {
+        banner(root, "error", `Could not list more sessions: ${err.message}`);
+      }
+    } }, `Show ${Math.min(SESSIONS_PAGE, total - shown)} more`),
+  ] : "");
   try {
-    const found = items(await api.listSessions());
-    replace(list, found.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No stored sessions yet.")) : found.map((x) => h("tr", {},
-      h("td", {}, h("button", { type: "button", class: "link open-session", dataset: { id: x.id }, onclick: () => open(x.id) }, x.name ?? x.id)),
-      h("td", {}, x.machine ?? ""),
-      h("td", {}, when(x.created_at), x.runs !== undefined ? h("small", {}, ` · ${x.runs} run${x.runs === 1 ? "" : "s"}`) : ""),
-      h("td", {}, h("button", { type: "button", class: "small delete", onclick: async () => {
-        if (!window.confirm(`Delete the stored session “${x.name ?? x.id}”?`)) return;
-        try { await api.deleteSession(x.id); renderSessions(root, open, imported); } catch (err) { banner(root, "error", err.message); }
-      } }, "Delete")),
-    )));
+    const first = await page();
+    replace(list, first.found.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No stored sessions yet.")) : first.found.map(row));
+    moreOrNot(first.total);
   } catch (err) {
     replace(list, h("tr", {}, h("td", { colspan: 4 }, `Could not list sessions: ${err.message}`)));
   }

@@ -121,6 +121,12 @@ export function renderSetup(root, next) {
   const locked = setupLocked();
   const setup = state.setup;
   const rerender = () => renderSetup(root, next);
+  // Enter in a field goes on, as Enter stores a run in the grid (it did nothing here).
+  root.onkeydown = (e) => {
+    if (e.key !== "Enter" || !e.target.matches("input")) return;
+    e.preventDefault();
+    $("button.next", root)?.click();
+  };
   const picture = h("div", { class: "picture-slot" }, conventionsPicture(setup.conventions));
   const redrawPicture = () => replace(picture, conventionsPicture(setup.conventions));
   const speeds = h("input", {

@@ -145,12 +145,8 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let c_star = fit.unbiased.as_ref().map(|u| &u.c);
     let prop = super::propagate(&problem, c_star.unwrap_or(&fit.c), known);
 
-    // The region of the fitted correction where `C*` is formed (8.11): the
-    // map form with two or more complex degrees of freedom over the planes.
-    let biased = fit.unbiased.as_ref().map(|u| {
-        let map_form = super::two_or_more_spare(sel.rows.len(), fit.planes.len());
-        super::bias::Region::new(u, &fit.c, &prop.correction_full, map_form)
-    });
+    // The region of the fitted correction where `C*` is formed (8.11).
+    let biased = fit.unbiased.as_ref().map(|u| super::bias::Region::new(u, &fit.c));
     let undetermined = undetermined(&fit.factor);
     let kappas = super::kappa(fit, &prop);
     // Covariances estimated from samples: Hotelling's quantile for their
@@ -174,7 +170,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         // correction `c` (the minimiser) errs by its bias as well as its
         // scatter: the region around `c` is its mean square error (8.11).
         if let Some(region) = &biased {
-            widened = region.plane(col, &widened, scale);
+            widened = region.plane(col, &widened);
         }
         let unbiased = c_star.map(|cu| cu[col]);
         let mut u = correction_uncertainty(c, &widened, conv);

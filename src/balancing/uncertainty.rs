@@ -70,9 +70,10 @@ pub const PRIOR_SAMPLES: f64 = 2.0;
 
 /// Whether `rows` used rows leave two or more complex degrees of freedom over
 /// `planes` planes: where the many-row forms apply (the rows conditioned on
-/// all predictions, method 8.8–8.9; the bias map of 8.11; the move of
-/// 8.12). With one (one speed, four sensors, three planes) the simpler forms
-/// are used; this one test keeps the three choices the same.
+/// all predictions, method 8.8–8.9; the move of 8.12). With one (one speed,
+/// four sensors, three planes) the simpler forms are used; this one test
+/// keeps the two choices the same. (Sessions 13–17 also took the region of
+/// 8.11 through the bias map only here; since session 18 it has one form.)
 pub fn two_or_more_spare(rows: usize, planes: usize) -> bool {
     rows >= planes + 2
 }

@@ -111,7 +111,7 @@ pub(super) fn coverage(hits: &[f64], checks: usize) -> (f64, f64) {
 }
 
 /// Whether a coverage `p` with standard error `sd` lies in 93–97 % widened by 3 sd.
-fn in_window((p, sd): (f64, f64)) -> bool {
+pub(super) fn in_window((p, sd): (f64, f64)) -> bool {
     (0.93 - 3.0 * sd..=0.97 + 3.0 * sd).contains(&p)
 }
 

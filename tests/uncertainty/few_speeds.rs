@@ -30,7 +30,7 @@ use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 
-use super::eiv::coverage;
+use super::eiv::{coverage, in_window};
 use super::{estimate, noisy, remaining_held, session_of, solve, LEAD_WITH};
 
 const SPEEDS: [f64; 3] = [600.0, 2200.0, 3800.0];
@@ -88,9 +88,19 @@ fn rotor(effect: f64) -> (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>) {
 /// speed-major over [`SENSORS`]), the share of rows whose bound held and of
 /// planes whose ellipse did.
 fn run(
+    job: (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>),
+    speeds: &[f64],
+    seed: u64,
+) -> (Vec<f64>, Vec<f64>) {
+    run_n(job, speeds, seed, REALISATIONS)
+}
+
+/// [`run`] with `realisations` noisy jobs.
+fn run_n(
     (w, y0, trial): (DMatrix<Complex64>, DVector<Complex64>, Vec<f64>),
     speeds: &[f64],
     seed: u64,
+    realisations: usize,
 ) -> (Vec<f64>, Vec<f64>) {
     let c = -(w.clone().svd(true, true).solve(&y0, 1e-14).unwrap());
     let exact: Vec<Vec<Complex64>> = std::iter::once(y0.iter().copied().collect())
@@ -107,7 +117,7 @@ fn run(
     };
     let mut rng = StdRng::seed_from_u64(seed);
     let (mut rows, mut planes) = (Vec::new(), Vec::new());
-    for _ in 0..REALISATIONS {
+    for _ in 0..realisations {
         let y: Vec<Vec<Complex64>> = exact
             .iter()
             .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
@@ -165,13 +175,14 @@ fn at_three_speeds_one_far_below_the_others_amplitude_95_holds_at_least_95_perce
 /// The ellipses at few speeds on the calibration rotor of eiv.rs
 /// (tests/uncertainty/rotor_model.rs, four sensors as here), trials of 10 %
 /// and 30 %, held in eiv.rs's window (93–97 % widened by three cluster
-/// standard errors). At four speeds 1500–4500 rpm with 10 % trials the
-/// errors-in-variables estimate `C*` is itself 0.75–0.89 sd short (the fixed
-/// point of 8.3 does not contract: `‖B‖₂` 0.5–2.2), and the map form of
-/// (8.11) understated the bias with it: 82.5 % before session 15, 93.0 % with
-/// the simpler form wherever `‖B‖₂` reaches the contraction limit
-/// (bias/region.rs). Three speeds 91.5 % and 94.5 %, four at 30 % 91.7 %:
-/// inside the widened window, under 93 %.
+/// standard errors) on both sides. At four speeds 1500–4500 rpm with 10 %
+/// trials the errors-in-variables estimate `C*` is itself 0.75–0.89 sd short
+/// (the fixed point of 8.3 does not contract: `‖B‖₂` 0.5–2.2). The region
+/// (8.11) through the bias map held 82.5 % here before session 15 and 93.0 %
+/// with the simpler form where `‖B‖₂` reached the contraction limit (three
+/// speeds 91.5 % and 94.5 %, four at 30 % 91.7 %: the lower side only was
+/// held then). Since session 18 the simpler form is the only one
+/// (bias/region.rs): three speeds 94.0 % and 95.3 %, four 95.0 % and 95.2 %.
 #[test]
 fn at_three_and_four_speeds_the_ellipses_hold_95_percent() {
     let mut failures = Vec::new();
@@ -189,13 +200,55 @@ fn at_three_and_four_speeds_the_ellipses_hold_95_percent() {
                 e.0,
                 e.1
             );
-            if e.0 < 0.93 - 3.0 * e.1 {
+            if !in_window(e) {
                 failures.push(format!(
                     "{} speeds, trial {effect}: ellipse {e:?}",
                     speeds.len()
                 ));
             }
         }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The ellipses at four speeds (1500–4500 rpm) on three plane layouts of
+/// the calibration rotor where the sensors see the planes partly alike (own
+/// shares 0.19–0.48): planes at nodes 1, 3, 5 with 100 % trials, at 1, 4, 6
+/// with 50 % and at 0, 3, 6 with 50 %, 1,000 realisations each. Pooled over
+/// the three cases they must lie in eiv.rs's window widened by three pooled
+/// standard errors, and each case above 93 % less three of its own. The
+/// region through the bias map (8.11, sessions 13–17) held 92.7 ± 0.7, 90.1
+/// ± 0.8 and 93.5 ± 0.6 % here (scripts/issue12_layouts.py, 200
+/// realisations: 88.5–90.5, 89.5–92.5 and 90–92.5 % per plane, no warning
+/// on a quarter to a third of the first case's planes), and fails the
+/// second case (floor 90.5 %). Since session 18 the region is `(1 + κ)
+/// Σ(C*) + b̂ b̂ᵀ` at every job (bias/region.rs): 95.6, 94.3 and 95.6 %,
+/// pooled 95.1 ± 0.3 %.
+#[test]
+fn at_four_speeds_on_planes_seen_partly_alike_the_ellipses_hold_95_percent() {
+    const N: usize = 1000;
+    let speeds = [1500.0, 2500.0, 3500.0, 4500.0];
+    let cases = [([1, 3, 5], 1.0), ([1, 4, 6], 0.5), ([0, 3, 6], 0.5)];
+    let mut failures = Vec::new();
+    let mut pooled = (0.0, 0.0);
+    for (case, (planes, effect)) in cases.into_iter().enumerate() {
+        let r = super::rotor_model::rotor_with_planes(&speeds, &planes, effect);
+        let (_, held) = run_n((r.w, r.y0, r.trial), &speeds, 450 + case as u64, N);
+        let e = coverage(&held, 3);
+        eprintln!(
+            "planes at nodes {planes:?}, trial {effect}: ellipse {:.3} ± {:.3}",
+            e.0, e.1
+        );
+        if e.0 < 0.93 - 3.0 * e.1 {
+            failures.push(format!("nodes {planes:?}, trial {effect}: ellipse {e:?}"));
+        }
+        pooled.0 += e.0 / cases.len() as f64;
+        pooled.1 += (e.1 / cases.len() as f64).powi(2);
+    }
+    let pooled = (pooled.0, pooled.1.sqrt());
+    eprintln!("pooled: ellipse {:.4} ± {:.4}", pooled.0, pooled.1);
+    if !in_window(pooled) {
+        failures.push(format!("pooled: ellipse {pooled:?}"));
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }

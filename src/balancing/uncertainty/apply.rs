@@ -146,7 +146,10 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     let prop = super::propagate(&problem, c_star.unwrap_or(&fit.c), known);
 
     // The region of the fitted correction where `C*` is formed (8.11).
-    let biased = fit.unbiased.as_ref().map(|u| super::bias::Region::new(u, &fit.c));
+    let biased = fit
+        .unbiased
+        .as_ref()
+        .map(|u| super::bias::Region::new(u, &fit.c));
     let undetermined = undetermined(&fit.factor);
     let kappas = super::kappa(fit, &prop);
     // Covariances estimated from samples: Hotelling's quantile for their

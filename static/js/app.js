@@ -64,8 +64,8 @@ function show(step, push = true) {
     else replace(root, h("h2", {}, "2 · Runs"), h("p", { class: "note" }, "Finish the set-up first: a name, the speeds, and a name for every plane and sensor."), h("button", { type: "button", class: "primary", onclick: () => show("setup") }, "← Back to the set-up"));
   }
   if (step === "solve") renderSolve(root, (weights, fromRun) => { newDraft("check", weights, fromRun); show("runs"); });
-  if (step === "sessions") renderSessions(root, open, open);
-  if (step === "machines") renderMachines(root, { openSession: open, newJob: startJob, showMachine });
+  if (step === "sessions") renderSessions(root, (id) => mayLeave(id) && open(id), open);
+  if (step === "machines") renderMachines(root, { openSession: (id) => mayLeave(id) && open(id), newJob: (setup, from) => mayLeave(null) && startJob(setup, from), showMachine });
   // The report is kept current so that printing from any step prints it.
   renderReport($("#step-report"));
   updateHeader();
@@ -79,6 +79,22 @@ function show(step, push = true) {
 function showMachine(id) {
   state.machineId = id;
   show("machines");
+}
+
+/**
+ * Whether the job shown may be left for another (`id`, or a new job for
+ * null). A run typed and not stored, or a new job's set-up, lives only in this
+ * page and its one local-storage slot: opening another job from the lists
+ * dropped it without a word. Ask first.
+ */
+function mayLeave(id) {
+  if (id !== null && id === state.id) return true;
+  const d = state.draft;
+  const typed = d && Array.isArray(d.cells) && d.cells.some((c) => c.amplitude !== null || c.phase_deg !== null);
+  const unsaved = typed ? `The run “${d.id}” is typed but not stored.`
+    : state.id === null && state.setup.name ? `The set-up of “${state.setup.name}” is not stored yet (it is stored with the zero run).` : "";
+  if (!unsaved) return true;
+  return window.confirm(`${unsaved} Leave it and open the other job? Cancel to go back to it.`);
 }
 
 /** Start a new job from a set-up (a machine's last one), optionally trimming from its stored coefficients. */

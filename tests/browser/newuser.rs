@@ -4,7 +4,8 @@
 //! without a word — a rotor mass checked as a "radius in mm", a rotor without
 //! its grade refused by the service, a machine's rotor that could never be
 //! stored (the form had no grade field and the service requires one), and
-//! sessions beyond the 50 newest that the list never showed.
+//! sessions beyond the 50 newest that the list never showed, and a typed run
+//! dropped without a word when another job was opened from a list.
 
 use crate::harness::form::{choose, field, type_into, value_of};
 use crate::harness::stand::{example_session, get, post, Stand};
@@ -25,6 +26,8 @@ async fn a_new_user_sees_what_was_typed_with_units_and_loses_no_rotor_data() {
     a_machine_is_stored_with_its_rotor(&stand).await;
     stand.renew().await;
     every_stored_session_can_be_reached_from_the_list(&stand).await;
+    stand.renew().await;
+    a_typed_run_is_not_dropped_by_opening_another_job(&stand).await;
     stand.stop().await;
 }
 
@@ -253,6 +256,51 @@ async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
     b.wait_until(
         "the oldest session opened",
         "return document.querySelector('#job-title').textContent === 'job 00 · stored'",
+    )
+    .await;
+}
+
+/// The text of the confirmation the page asks (waited for, bounded).
+async fn confirmation(b: &Browser) -> String {
+    for _ in 0..crate::harness::WAIT_POLLS {
+        if let Ok(text) = b.client.get_alert_text().await {
+            return text;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+    }
+    panic!("no confirmation was asked within 30 s");
+}
+
+async fn a_typed_run_is_not_dropped_by_opening_another_job(stand: &Stand) {
+    let b = &stand.browser;
+    type_into(b, &field("name"), "Typed").await;
+    type_into(b, &field("speeds"), "1480").await;
+    type_into(b, &field("planes[0].id"), "A").await;
+    type_into(b, &field("sensors[0].id"), "1H").await;
+    b.click("#step-setup button.next").await;
+    let cell = field("runs[0].readings[0].amplitude");
+    type_into(b, &cell, "85").await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("#step-sessions button.new-session").await;
+    let asked = confirmation(b).await;
+    assert!(
+        asked.starts_with("The run “zero” is typed but not stored."),
+        "{asked}"
+    );
+    b.client.dismiss_alert().await.unwrap();
+    b.click("nav [data-step=\"runs\"]").await;
+    assert_eq!(
+        value_of(b, &cell).await,
+        "85",
+        "the typed run is still there"
+    );
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("#step-sessions button.new-session").await;
+    confirmation(b).await;
+    b.client.accept_alert().await.unwrap();
+    b.wait_until(
+        "a new job's set-up",
+        "return !document.querySelector('#step-setup').hidden && document.querySelector('[data-field=\"name\"]').value === ''",
     )
     .await;
 }

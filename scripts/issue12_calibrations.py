@@ -86,6 +86,12 @@ def solve(binary, y, t, speeds, sensors):
 
 def solve_full(binary, y, t, speeds, sensors):
     """`solve`, and the answer's warnings."""
+    c, cov, sol = solve_answer(binary, y, t, speeds, sensors)
+    return c, cov, sol.get("warnings", [])
+
+
+def solve_answer(binary, y, t, speeds, sensors):
+    """`solve`: the corrections, their covariances, and the whole answer."""
     ns = len(sensors)
     runs = [{"id": f"R{k}", "readings": [
         {"amplitude": float(abs(y[k, a])), "phase_deg": float(np.degrees(np.angle(y[k, a])) % 360),
@@ -100,7 +106,7 @@ def solve_full(binary, y, t, speeds, sensors):
     out = subprocess.run([binary, "solve", "-"], input=json.dumps(body).encode(), capture_output=True, check=True)
     sol = json.loads(out.stdout)
     c = np.array([x["mass_g"] * np.exp(1j * np.radians(x["angle_deg"])) for x in sol["corrections"]])
-    return c, np.array([x["uncertainty"]["covariance_g2"] for x in sol["corrections"]]), sol.get("warnings", [])
+    return c, np.array([x["uncertainty"]["covariance_g2"] for x in sol["corrections"]]), sol
 
 
 def kwiden(y, t, c, cov, ndir=16):

@@ -156,6 +156,11 @@ async function loadLastSolution() {
     const stored = await api.solutions(state.id);
     const last = Array.isArray(stored) && stored.length ? stored[stored.length - 1] : null;
     if (!last || !last.solution) return;
+    // A trim from a machine's stored coefficients is said by its solutions
+    // only: the option lived in one browser's local storage, so the job
+    // reopened elsewhere asked for trial runs and could not be solved again.
+    const from = last.solution.coefficients_from;
+    if (from && from.machine && !state.options.coefficientsFrom) state.options.coefficientsFrom = { machine: from.machine };
     const used = (last.runs || []).map((r) => r.run_id).sort().join("\n");
     const now = state.runs.map((r) => r.id).sort().join("\n");
     if (used === now) {

@@ -72,6 +72,13 @@ export function runChecks(sol) {
         h("tbody", {}, c.rows.map(checkRow)))))));
 }
 
+/** Where the influence coefficients came from, when not from this job's trial runs. */
+function coefficientsWords(sol) {
+  const from = sol.coefficients_from;
+  if (!from) return "";
+  return h("p", { class: "coefficients-from" }, `Influence coefficients: the stored ones of machine ${from.machine}, version ${from.version ?? "latest"} (no trial runs in this job).`);
+}
+
 /** Greyed corrections explained: why, and what to do. */
 export function doubts(sol) {
   const list = sol.corrections.map((c) => doubt(sol, c)).filter(Boolean);
@@ -120,6 +127,7 @@ export function answerParts(sol, checkRun) {
   return [
     verdict(sol),
     warningsBox(sol),
+    coefficientsWords(sol),
     trimWords(sol),
     h("h3", {}, sol.from_run ? `Add these weights to what is on in run “${sol.from_run}”` : "Fit these weights (all trial weights removed)"),
     h("div", { class: "scroll" }, correctionsTable(sol)),

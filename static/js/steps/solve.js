@@ -119,7 +119,10 @@ export function summaryBox(solution) {
 }
 
 export function warningsBox(solution) {
-  if (!solution.warnings.length) return h("div", { class: "warnings none" }, "No warnings: the trial runs were clear and the planes independent.");
+  if (!solution.warnings.length) {
+    // A trim from stored coefficients has no trial runs to speak of.
+    return h("div", { class: "warnings none" }, solution.coefficients_from ? "No warnings." : "No warnings: the trial runs were clear and the planes independent.");
+  }
   return h("div", { class: "warnings", role: "alert" },
     h("h3", {}, solution.warnings.length === 1 ? "1 warning — read before fitting weights" : `${solution.warnings.length} warnings — read before fitting weights`),
     h("ul", {}, solution.warnings.map((w) => {

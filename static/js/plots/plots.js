@@ -40,7 +40,7 @@ function identification(sol) {
         h("tbody", {}, inside.map((r) => h("tr", {},
           h("td", {}, r.sensor), h("td", {}, r.plane), h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0)),
           h("td", {}, fmt(r.damping_ratio, 3)), h("td", {}, fmt(r.amplification_factor, 1)),
-          h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "give the service speed in the set-up"
+          h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "no service speed in this job's rotor data"
             : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`))))));
   };
   if (identification.cache && identification.cache.key === key) draw(identification.cache.res);

@@ -137,6 +137,12 @@ pub async fn multi_speed_job_shows_bode_plots(stand: &Stand) {
     assert_eq!(counts[3], json!(1), "identification beside them");
     // The compressor passes a critical speed between 1200 and 9600 rpm.
     b.wait_for("#step-solve .identification td.critical").await;
+    // Without rotor data no margin: said as a fact, not as advice to change a
+    // set-up that is locked once stored (it said "give the service speed in the set-up").
+    let margin = b
+        .text("#step-solve .identification tbody tr td:last-child")
+        .await;
+    assert_eq!(margin, "no service speed in this job's rotor data");
     // The polar plots per speed are filtered to one speed at a time.
     assert_eq!(counts[2], json!(sensors));
     self::multispeed::polar_filter_narrows_the_plots(b, session).await;

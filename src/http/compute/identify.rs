@@ -43,7 +43,7 @@ pub async fn rotor(
     responses(
         (status = 200, description = "Natural frequency, damping, decrement, amplitude and phase", body = FreeDecay),
         MalformedJson,
-        (status = 422, description = "Too few samples, a step `dt_s` outside 1e-9 to 1e3 s, or samples that show no decaying oscillation (less than half a period, or a growing amplitude)", body = ErrorBody),
+        (status = 422, description = "Too few samples, a step `dt_s` outside 1e-9 to 25 s, a sample above 1e12 or all below 1e-12 in size, samples that show no decaying oscillation (less than half a period, or a growing amplitude), or a frequency outside 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn free_decay(
@@ -58,7 +58,7 @@ pub async fn free_decay(
     responses(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),
         MalformedJson,
-        (status = 422, description = "Non-square or asymmetric matrix, a mass entry out of range (diagonal 0 or 1e-9 to 1e9 in magnitude, any entry at most 1e9), a shape of the wrong length, too few modes", body = ErrorBody),
+        (status = 422, description = "Non-square or asymmetric matrix, a mass or stiffness entry, measured frequency, shape entry, weight or starting parameter out of its range (docs/session-format.md, Identification), a shape of the wrong length, too few modes, or a corrected model whose frequencies leave 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn model(

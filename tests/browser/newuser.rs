@@ -4,7 +4,7 @@
 //! without a word — a rotor mass checked as a "radius in mm", a rotor without
 //! its grade refused by the service, a machine's rotor that could never be
 //! stored (the form had no grade field and the service requires one), and
-//! sessions beyond the 50 newest that the list never showed, and a typed run
+//! sessions beyond the 50 newest (machines beyond 100) that the lists never showed, and a typed run
 //! dropped without a word when another job was opened from a list, and a
 //! trim job from stored coefficients that could not be solved again when
 //! reopened in another browser (it asked for trial runs).
@@ -262,6 +262,29 @@ async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
         "return document.querySelector('#job-title').textContent === 'job 00 · stored'",
     )
     .await;
+
+    // Machines the same way (a fleet on one database), 100 at a time.
+    for i in 0..102 {
+        let id = format!("M-{i:03}");
+        let stored = post(stand, "/api/v1/machines", json!({"id": id, "name": id})).await;
+        assert_eq!(stored["id"], json!(id), "{stored}");
+    }
+    b.click("nav [data-step=\"machines\"]").await;
+    b.wait_for("#step-machines button.more-machines").await;
+    assert_eq!(
+        texts(b, "#step-machines button.open-machine").await.len(),
+        100
+    );
+    let note = b.text("#step-machines p.more").await;
+    assert_eq!(note, "The 100 newest of 102 machines. Show 2 more");
+    b.click("#step-machines button.more-machines").await;
+    b.wait_until(
+        "the older machines listed",
+        "return document.querySelectorAll('#step-machines button.open-machine').length === 102",
+    )
+    .await;
+    let ids = texts(b, "#step-machines button.open-machine").await;
+    assert_eq!(ids[101], "M-000", "the oldest is reachable");
 }
 
 /// The text of the confirmation the page asks (waited for, bounded).

@@ -76,7 +76,7 @@ export const api = {
   solveOnce: (session, options) => call("POST", "/solve", { session, options: options || {} }),
   trialWeights: (session, options) => call("POST", "/trial-weights", { session, options: options || {} }),
   identifyRotor: (session, options) => call("POST", "/identify/rotor", { session, options: options || {} }),
-  listMachines: () => call("GET", "/machines?limit=100"),
+  listMachines: (limit = 100, offset = 0) => call("GET", `/machines?limit=${limit}&offset=${offset}`),
   getMachine: (id) => call("GET", `/machines/${encodeURIComponent(id)}`),
   createMachine: (machine) => call("POST", "/machines", machine),
   poolCoefficients: (id, sessions) => call("POST", `/machines/${encodeURIComponent(id)}/coefficients`, { sessions }),

@@ -136,18 +136,45 @@ function newMachineForm(root, go) {
 }
 
 /** The machines page: one machine when `state.machineId` is set, else the list. */
+/** Machines listed at a time. */
+const MACHINES_PAGE = 100;
+
 export async function renderMachines(root, go) {
   if (state.machineId) return machinePage(root, state.machineId, go);
   const list = h("tbody", {}, h("tr", {}, h("td", { colspan: 3 }, "Loading…")));
+  const more = h("p", { class: "more" });
   replace(root, h("h2", {}, "Machines"), newMachineForm(root, go),
     h("div", { class: "scroll" }, h("table", { class: "sessions machines" },
-      h("thead", {}, h("tr", {}, h("th", {}, "Machine"), h("th", {}, "Name"), h("th", {}, "Stored"))), list)));
-  try {
-    const data = await api.listMachines();
+      h("thead", {}, h("tr", {}, h("th", {}, "Machine"), h("th", {}, "Name"), h("th", {}, "Stored"))), list)),
+    more);
+  const row = (x) => h("tr", {},
+    h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
+    h("td", {}, x.name || ""), h("td", {}, when(x.created_at)));
+  // A page at a time (newest first): only the first 100 were shown, and a
+  // fleet's older machines could not be reached from the form.
+  let shown = 0;
+  const page = async () => {
+    const data = await api.listMachines(MACHINES_PAGE, shown);
     const found = (data && data.machines) || [];
-    replace(list, found.length === 0 ? h("tr", {}, h("td", { colspan: 3 }, "No machines yet.")) : found.map((x) => h("tr", {},
-      h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
-      h("td", {}, x.name || ""), h("td", {}, when(x.created_at)))));
+    shown += found.length;
+    return { found, total: data && typeof data.total === "number" ? data.total : shown };
+  };
+  const moreOrNot = (total) => replace(more, shown < total ? [
+    h("span", { class: "hint" }, `The ${shown} newest of ${total} machines. `),
+    h("button", { type: "button", class: "small more-machines", onclick: async () => {
+      try {
+        const next = await page();
+        list.append(...next.found.map(row));
+        moreOrNot(next.total);
+      } catch (err) {
+        banner(root, "error", `Could not list more machines: ${err.message}`);
+      }
+    } }, `Show ${Math.min(MACHINES_PAGE, total - shown)} more`),
+  ] : "");
+  try {
+    const first = await page();
+    replace(list, first.found.length === 0 ? h("tr", {}, h("td", { colspan: 3 }, "No machines yet.")) : first.found.map(row));
+    moreOrNot(first.total);
   } catch (err) {
     replace(list, h("tr", {}, h("td", { colspan: 3 }, `Could not list machines: ${err.message}`)));
   }

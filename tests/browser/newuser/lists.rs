@@ -1,0 +1,71 @@
+//! Every stored session and machine reachable from its list, a page at a time.
+
+use super::texts;
+use crate::harness::stand::{example_session, post, Stand};
+use serde_json::json;
+
+pub async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for i in 0..53 {
+        session["name"] = json!(format!("job {i:02}"));
+        let stored = post(stand, "/api/v1/sessions", session.clone()).await;
+        assert!(stored["id"].is_string(), "{stored}");
+    }
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("#step-sessions button.more-sessions").await;
+    let names = texts(b, "#step-sessions button.open-session").await;
+    assert_eq!(names.len(), 50, "a page at a time");
+    assert_eq!(names[0], "job 52", "newest first");
+    let note = b.text("#step-sessions p.more").await;
+    assert_eq!(note, "The 50 newest of 53 stored sessions. Show 3 more");
+    b.click("#step-sessions button.more-sessions").await;
+    b.wait_until(
+        "the older sessions listed",
+        "return document.querySelectorAll('#step-sessions button.open-session').length === 53",
+    )
+    .await;
+    let names = texts(b, "#step-sessions button.open-session").await;
+    assert_eq!(names[52], "job 00", "the oldest is reachable");
+    assert_eq!(
+        b.text("#step-sessions p.more").await,
+        "",
+        "nothing more to show"
+    );
+    // And it opens.
+    b.client
+        .execute(
+            "[...document.querySelectorAll('#step-sessions button.open-session')].pop().click()",
+            vec![],
+        )
+        .await
+        .unwrap();
+    b.wait_until(
+        "the oldest session opened",
+        "return document.querySelector('#job-title').textContent === 'job 00 · stored'",
+    )
+    .await;
+
+    // Machines the same way (a fleet on one database), 100 at a time.
+    for i in 0..102 {
+        let id = format!("M-{i:03}");
+        let stored = post(stand, "/api/v1/machines", json!({"id": id, "name": id})).await;
+        assert_eq!(stored["id"], json!(id), "{stored}");
+    }
+    b.click("nav [data-step=\"machines\"]").await;
+    b.wait_for("#step-machines button.more-machines").await;
+    assert_eq!(
+        texts(b, "#step-machines button.open-machine").await.len(),
+        100
+    );
+    let note = b.text("#step-machines p.more").await;
+    assert_eq!(note, "The 100 newest of 102 machines. Show 2 more");
+    b.click("#step-machines button.more-machines").await;
+    b.wait_until(
+        "the older machines listed",
+        "return document.querySelectorAll('#step-machines button.open-machine').length === 102",
+    )
+    .await;
+    let ids = texts(b, "#step-machines button.open-machine").await;
+    assert_eq!(ids[101], "M-000", "the oldest is reachable");
+}

@@ -1,0 +1,103 @@
+//! Readings shown as typed, answers with their unit, and a typed run kept
+//! when another job is opened from a list.
+
+use super::{confirmation, texts, ENTER};
+use crate::harness::form::{choose, field, type_into, value_of};
+use crate::harness::stand::Stand;
+
+pub async fn small_readings_are_shown_as_typed_and_answers_carry_their_unit(stand: &Stand) {
+    let b = &stand.browser;
+    type_into(b, &field("name"), "Fan in/s").await;
+    type_into(b, &field("speeds"), "1480").await;
+    type_into(b, &field("planes[0].id"), "A").await;
+    type_into(b, &field("sensors[0].id"), "1H").await;
+    choose(b, &field("sensors[0].unit"), "in_s_pk").await;
+    b.click("#step-setup button.next").await;
+    type_into(b, &field("runs[0].readings[0].amplitude"), "0.085").await;
+    type_into(
+        b,
+        &field("runs[0].readings[0].phase_deg"),
+        &format!("212.4{ENTER}"),
+    )
+    .await;
+    b.wait_for("#step-runs button.add-trial").await;
+    b.click("#step-runs button.add-trial").await;
+    type_into(b, &field("runs[1].weights[0].mass_g"), "20").await;
+    type_into(b, &field("runs[1].weights[0].angle_deg"), "0").await;
+    type_into(b, &field("runs[1].readings[0].amplitude"), "0.06").await;
+    type_into(
+        b,
+        &field("runs[1].readings[0].phase_deg"),
+        &format!("100{ENTER}"),
+    )
+    .await;
+    b.wait_until(
+        "both runs stored",
+        "return document.querySelectorAll('#step-runs td.value.amp').length === 2",
+    )
+    .await;
+    // Before: "0.09" and "212" for what was typed as 0.085 and 212.4.
+    assert_eq!(
+        texts(b, "#step-runs td.value.amp").await,
+        ["0.085", "0.06"],
+        "amplitudes as typed"
+    );
+    assert_eq!(
+        texts(b, "#step-runs td.value.phase").await,
+        ["212.4", "100"],
+        "phases as typed"
+    );
+
+    b.click("#step-runs button.go-solve").await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .summary").await;
+    let labels = texts(b, "#step-solve .summary .big .label").await;
+    assert_eq!(
+        labels[..2],
+        ["RMS over sensors, in/s peak", "Largest, in/s peak"],
+        "the summary's figures say their unit"
+    );
+    // 0.085 as found, not 0.09; the residual's phases say their convention.
+    assert_eq!(
+        texts(b, "#step-solve table.residual td.before").await,
+        ["0.085"]
+    );
+    let heads = texts(b, "#step-solve table.residual th").await;
+    assert!(heads.contains(&"Phase, ° (lag)".to_string()), "{heads:?}");
+    let summary = b.text("#step-solve .summary").await;
+    assert!(summary.contains("0.085 →"), "{summary}");
+}
+
+pub async fn a_typed_run_is_not_dropped_by_opening_another_job(stand: &Stand) {
+    let b = &stand.browser;
+    type_into(b, &field("name"), "Typed").await;
+    type_into(b, &field("speeds"), "1480").await;
+    type_into(b, &field("planes[0].id"), "A").await;
+    type_into(b, &field("sensors[0].id"), "1H").await;
+    b.click("#step-setup button.next").await;
+    let cell = field("runs[0].readings[0].amplitude");
+    type_into(b, &cell, "85").await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("#step-sessions button.new-session").await;
+    let asked = confirmation(b).await;
+    assert!(
+        asked.starts_with("The run “zero” is typed but not stored."),
+        "{asked}"
+    );
+    b.client.dismiss_alert().await.unwrap();
+    b.click("nav [data-step=\"runs\"]").await;
+    assert_eq!(
+        value_of(b, &cell).await,
+        "85",
+        "the typed run is still there"
+    );
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("#step-sessions button.new-session").await;
+    confirmation(b).await;
+    b.client.accept_alert().await.unwrap();
+    b.wait_until(
+        "a new job's set-up",
+        "return !document.querySelector('#step-setup').hidden && document.querySelector('[data-field=\"name\"]').value === ''",
+    )
+    .await;
+}

@@ -154,3 +154,22 @@ export function banner(container, kind, text) {
   el.hidden = !text;
   el.setAttribute("role", kind === "error" ? "alert" : "status");
 }
+
+/**
+ * The field being typed in under `root`, and a function that puts the focus
+ * and caret back in its new copy: a re-render while a cell was typed in (the
+ * trial-weight suggestion arriving, say) replaced the input under the cursor,
+ * and the next keystrokes went nowhere.
+ */
+export function keepFocus(root) {
+  const el = document.activeElement;
+  const field = el && root.contains(el) && el.dataset ? el.dataset.field : null;
+  if (!field) return () => {};
+  const [start, end] = [el.selectionStart, el.selectionEnd];
+  return () => {
+    const again = $(`[data-field="${CSS.escape(field)}"]`, root);
+    if (!again || again === el) return;
+    again.focus();
+    if (typeof start === "number") again.setSelectionRange(start, end);
+  };
+}

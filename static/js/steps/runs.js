@@ -4,7 +4,7 @@
 // creates the session; each trial run is then appended, a corrected run is PUT.
 
 import { h, replace, $ } from "../page/dom.js";
-import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark } from "../page/fields.js";
+import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark, keepFocus } from "../page/fields.js";
 import { fmt, fmtReading, unitLabel, DECIMAL_RULE } from "../page/num.js";
 import { api, ApiError } from "../job/api.js";
 import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "../job/state.js";
@@ -253,6 +253,7 @@ function reshapeDraft(d) {
 
 /** Render the runs step into `root`; `solve` goes on to step 3. */
 export function renderRuns(root, solve) {
+  const typing = keepFocus(root);
   if (state.draft === undefined || (state.draft === null && !referenceRun())) newDraft();
   if (state.draft) reshapeDraft(state.draft);
   const rerender = () => renderRuns(root, solve);
@@ -291,4 +292,6 @@ export function renderRuns(root, solve) {
       ],
     ),
   );
+  typing();
 }
+

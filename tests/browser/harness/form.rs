@@ -15,13 +15,25 @@ pub fn typed(v: &Value) -> String {
     format!("{x}")
 }
 
-/// Clear an input and type `text` into it.
+/// Clear an input and type `text` into it. The page may draw the step again
+/// between finding the input and typing (an answer arriving, such as the
+/// trial-weight suggestion): the input found is then stale, and the typing
+/// starts again in the one now matching `css`.
 pub async fn type_into(b: &Browser, css: &str, text: &str) {
-    let el = b.wait_for(css).await;
-    el.clear().await.expect("input clears");
-    el.send_keys(text)
-        .await
-        .unwrap_or_else(|e| panic!("typing into {css}: {e}"));
+    for _ in 0..50 {
+        let el = b.wait_for(css).await;
+        match el.clear().await {
+            Ok(()) => {}
+            Err(e) if e.to_string().contains("stale element") => continue,
+            Err(e) => panic!("clearing {css}: {e}"),
+        }
+        match el.send_keys(text).await {
+            Ok(()) => return,
+            Err(e) if e.to_string().contains("stale element") => continue,
+            Err(e) => panic!("typing into {css}: {e}"),
+        }
+    }
+    panic!("typing into {css}: the input went stale 50 times in a row");
 }
 
 /// Choose a select's option by clicking it.

@@ -22,7 +22,25 @@ pub async fn small_readings_are_shown_as_typed_and_answers_carry_their_unit(stan
     .await;
     b.wait_for("#step-runs button.add-trial").await;
     b.click("#step-runs button.add-trial").await;
-    type_into(b, &field("runs[1].weights[0].mass_g"), "20").await;
+    // The step drawn again while a cell is typed in (what the trial-weight
+    // suggestion does when its answer arrives): the typing goes on in it.
+    let mass = field("runs[1].weights[0].mass_g");
+    type_into(b, &mass, "2").await;
+    b.client
+        .execute_async(
+            "const done = arguments[0]; import('/static/js/job/state.js').then((m) => { m.changed(); done(); })",
+            vec![],
+        )
+        .await
+        .unwrap();
+    b.client
+        .active_element()
+        .await
+        .unwrap()
+        .send_keys("0")
+        .await
+        .unwrap();
+    assert_eq!(value_of(b, &mass).await, "20", "typing went on in the cell");
     type_into(b, &field("runs[1].weights[0].angle_deg"), "0").await;
     type_into(b, &field("runs[1].readings[0].amplitude"), "0.06").await;
     type_into(

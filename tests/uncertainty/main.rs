@@ -11,6 +11,7 @@ mod few_speeds;
 mod linearisation;
 mod noise_options;
 mod rotor_model;
+mod small_trial;
 mod undetermined;
 
 #[path = "../common/generated.rs"]

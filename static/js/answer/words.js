@@ -14,7 +14,16 @@ const quoted = (message, fallback) => {
 const PLAIN = {
   trial_effect_small: (w) => [`The trial weight${w.plane ? ` in plane ${w.plane}` : ""} moved the vibration too little to measure its effect.`, "Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase)."],
   ill_conditioned: () => ["Two planes look almost the same to the sensors, so the corrections may be large and cancel each other.", "Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out planes the sensors cannot tell apart” in the options)."],
-  regions_unreliable: () => ["Some planes look almost the same to the sensors, so vibration that no plane can correct can hide in the answer: the 95 % figures of every plane may be far off.", "Fit the weights, then do a check run and trim; better, add a sensor or speed that tells the planes apart, or solve with fewer planes."],
+  regions_unreliable: (w) => {
+    const [alike, weak] = unreliableWhy(w);
+    const what = [];
+    if (alike) what.push("Some planes look almost the same to the sensors, so vibration that no plane can correct can hide in the answer.");
+    if (weak) what.push("A trial weight was too small, and the planes are solved together, so the other planes share its error.");
+    const todo = [];
+    if (weak) todo.push("Repeat the small trial with a bigger weight.");
+    if (alike) todo.push("Fit the weights, then do a check run and trim; better, add a sensor or speed that tells the planes apart, or solve with fewer planes.");
+    return [`${what.join(" ")} The 95 % figures of every plane may be far off.`, todo.join(" ")];
+  },
   mass_limit_active: (w) => [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set.`, "The vibration left will be larger than without the limit; raise the limit if the plane can take more."],
   mixed_units: () => ["The sensors use different units, so the sum over them mixes units.", "Leave out the sensors of one unit, or accept that the larger numbers count more."],
   plane_undetermined: (w) => [`The readings cannot tell what plane ${w.plane || ""} needs: its trial weight changed nothing that the sensors see on their own.`, `Repeat the trial in plane ${w.plane || "that plane"} with a heavier weight or at a larger radius, add a sensor that sees it, or leave the plane out.`],
@@ -31,6 +40,19 @@ const PLAIN = {
  * (method.md 8.11, session 13), beside the least-squares weight that is fitted.
  */
 export const UNBIASED_WORDS = "Noisy readings pull the computed weight towards zero; this is the estimate with that pull removed. Fit the weight in the Mass and Angle columns, which leaves less vibration; a large difference between the two means the trial weight was small against the noise.";
+
+/**
+ * Why the service said `regions_unreliable`, from its message: `[alike, weak]`,
+ * planes that look alike to the sensors, and one plane's trial too small
+ * beside the others (uncertainty/hidden.rs). A message naming neither counts
+ * as the first, the older and more general reason.
+ */
+function unreliableWhy(w) {
+  const m = String(w.message || "");
+  const weak = m.includes("trial_effect_small");
+  const alike = !weak || m.includes("ill_conditioned") || m.includes("own share") || m.includes("only this much of each plane's effect");
+  return [alike, weak];
+}
 
 /** `{what, todo}` for a warning. */
 export function plainWarning(w) {
@@ -54,7 +76,12 @@ export function doubt(solution, c) {
   if (solution.from_run && c.mass_g < 0.05) return null;
   const small = solution.warnings.some((w) => (w.code === "trial_effect_small" || w.code === "plane_undetermined") && (!w.plane || w.plane === c.plane));
   if (small) return `The trial weight in plane ${c.plane} was too small to measure its effect, so this correction may be far off. Repeat the trial run in plane ${c.plane} with a bigger weight before fitting it.`;
-  if (solution.warnings.some((w) => w.code === "regions_unreliable")) {
+  const unreliable = solution.warnings.find((w) => w.code === "regions_unreliable");
+  if (unreliable) {
+    const [alike, weak] = unreliableWhy(unreliable);
+    if (weak && !alike) {
+      return `The 95 % figures for plane ${c.plane} may be far off: another plane's trial weight was too small, and the planes are solved together. Repeat that trial with a bigger weight before fitting.`;
+    }
     return `The 95 % figures for plane ${c.plane} may be far off: planes that look almost the same to the sensors can hide vibration that no plane corrects. Fit the weight, then do a check run and trim.`;
   }
   const u = c.uncertainty;

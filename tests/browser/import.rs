@@ -45,8 +45,10 @@ async fn imported_jobs_show_their_rows_warnings_uncertainty_places_and_angles() 
     stand.renew().await;
     a_plane_with_fixed_places_shows_its_correction_split_over_two_places(&stand).await;
     stand.renew().await;
-    the_job_level_warning_says_whether_a_small_trial_or_alike_planes_spoil_the_figures(&stand)
+    crate::scenes::answer_notes::the_job_level_warning_says_whether_a_small_trial_or_alike_planes_spoil_the_figures(&stand)
         .await;
+    stand.renew().await;
+    crate::scenes::answer_notes::a_bound_below_the_prediction_and_an_agreeing_row_above_its_bound_are_explained(&stand).await;
     stand.renew().await;
     polar_plot_angles_run_clockwise_for_phase_lag_and_counter_clockwise_for_lead(&stand).await;
     stand.stop().await;
@@ -257,47 +259,6 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and
             ["summary unsure", ["400", "400", "400"]]
         ])
     );
-}
-
-/// `regions_unreliable` has two causes (uncertainty/hidden.rs): planes alike
-/// to the sensors, or a small trial beside planes without a warning (session
-/// 18). The page's own words module tells them apart by the service's
-/// message, and says what to do for each.
-async fn the_job_level_warning_says_whether_a_small_trial_or_alike_planes_spoil_the_figures(
-    stand: &Stand,
-) {
-    let b = &stand.browser;
-    let script = r#"
-        const [done] = arguments;
-        import('/static/js/answer/words.js').then((m) => {
-          const weak = { code: 'regions_unreliable', message: 'the trial in plane(s) P0 changed the vibration too little for its figures to be trusted (trial_effect_small), and the planes are solved together' };
-          const alike = { code: 'regions_unreliable', message: 'plane(s) P1 act on the sensors almost like a combination of the other planes (ill_conditioned): a vibration ...' };
-          const p1 = { plane: 'P1', mass_g: 3, angle_deg: 10, uncertainty: { mass_g: [2.9, 3.1], angle_deg: [9, 11] } };
-          done([m.plainWarning(weak), m.plainWarning(alike),
-                m.doubt({ warnings: [weak] }, p1), m.doubt({ warnings: [alike] }, p1)]);
-        });
-    "#;
-    let got = b
-        .client
-        .execute_async(script, vec![])
-        .await
-        .expect("module runs");
-    let text = |v: &serde_json::Value| v.to_string();
-    assert!(
-        text(&got[0]).contains("A trial weight was too small")
-            && text(&got[0]).contains("Repeat the small trial with a bigger weight")
-            && !text(&got[0]).contains("almost the same"),
-        "{got}"
-    );
-    assert!(
-        text(&got[1]).contains("look almost the same") && !text(&got[1]).contains("too small"),
-        "{got}"
-    );
-    assert!(
-        text(&got[2]).contains("another plane's trial weight was too small"),
-        "{got}"
-    );
-    assert!(text(&got[3]).contains("look almost the same"), "{got}");
 }
 
 async fn a_plane_with_fixed_places_shows_its_correction_split_over_two_places(stand: &Stand) {

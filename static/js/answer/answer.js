@@ -6,7 +6,7 @@
 import { h } from "../page/dom.js";
 import { fmt, fmtAngle, commonUnit, unitLabel } from "../page/num.js";
 import { state } from "../job/state.js";
-import { correctionsTable, summaryBox, residualTable, warningsBox, phaseWords } from "../steps/solve.js";
+import { correctionsTable, summaryBox, residualTable, residualNote, warningsBox, phaseWords } from "../steps/solve.js";
 import { doubt } from "./words.js";
 import { planePicture } from "./planes.js";
 import { plotsSection } from "../plots/plots.js";
@@ -50,7 +50,7 @@ function unitOf(sensor) {
 }
 
 function checkRow(r) {
-  return h("tr", {},
+  return h("tr", { class: r.measured > r.amplitude_95 ? "above95" : "" },
     h("td", {}, fmt(r.speed_rpm, 0)), h("td", {}, r.sensor),
     h("td", { class: "measured" }, `${fmt(r.measured, 1)} at ${fmtAngle(r.measured_phase_deg)}`),
     h("td", { class: "predicted" }, `${fmt(r.predicted, 1)} at ${fmtAngle(r.predicted_phase_deg)}`),
@@ -69,7 +69,20 @@ export function runChecks(sol) {
         : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted). Check its weights and readings.`),
       h("div", { class: "scroll" }, h("table", { class: "check-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, `Measured, at phase ${phaseWords(sol)}`), h("th", {}, `Predicted, at phase ${phaseWords(sol)}`), h("th", {}, "95 % bound"), h("th", {}, "Unit"))),
-        h("tbody", {}, c.rows.map(checkRow)))))));
+        h("tbody", {}, c.rows.map(checkRow)))),
+      checkNote(c))));
+}
+
+/**
+ * Why a run can agree while a row lies above its 95 % bound: the verdict
+ * weighs all the run's rows together at 99 %, the check readings' own
+ * scatter included, and the bound is each row's own at 95 %.
+ */
+function checkNote(c) {
+  const above = c.rows.filter((r) => r.measured > r.amplitude_95).length;
+  if (!c.consistent || !above) return "";
+  return h("p", { class: "note check-note" },
+    `${above === 1 ? "One row lies" : `${above} rows lie`} above ${above === 1 ? "its" : "their"} 95 % bound, yet the run agrees: the verdict weighs all its rows together (at 99 %, counting the scatter of the check readings themselves), while each bound is that row's alone, and about one row in twenty is expected above it.`);
 }
 
 /** Where the influence coefficients came from, when not from this job's trial runs. */
@@ -138,6 +151,7 @@ export function answerParts(sol, checkRun) {
     runChecks(sol),
     h("h3", {}, "Predicted vibration after correction"),
     h("div", { class: "scroll" }, residualTable(sol)),
+    residualNote(sol),
     plotsSection(sol),
     h("div", { class: "actions" },
       h("button", { type: "button", class: "primary check-run", onclick: () => checkRun(checkWeights(sol, false), sol.from_run || null) },

@@ -8,7 +8,7 @@ import { h, replace, $ } from "../page/dom.js";
 import { fmt, fmtAngle, unitLabel } from "../page/num.js";
 import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
-import { correctionsTable, residualTable, summaryBox, warningsBox } from "./solve.js";
+import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox } from "./solve.js";
 import { verdict, trimWords, runChecks, planePictures, doubts } from "../answer/answer.js";
 import { plotsSection } from "../plots/plots.js";
 
@@ -135,7 +135,7 @@ export function renderReport(root) {
               h("td", {}, r ? fmt(r.amplitude, 2) : "–"), h("td", {}, unitLabel(units.get(row.sensor))), h("td", {}, r ? fmt(r.phase_deg, 1) : "–"));
           }))))),
       sol ? h("section", { class: "report-coeffs" }, h("h3", {}, "Influence coefficients used"), coefficientsTable(sol)) : "",
-      sol ? h("section", { class: "report-residual" }, h("h3", {}, "Predicted vibration after correction"), residualTable(sol), runChecks(sol)) : "",
+      sol ? h("section", { class: "report-residual" }, h("h3", {}, "Predicted vibration after correction"), residualTable(sol), residualNote(sol), runChecks(sol)) : "",
       sol ? h("section", { class: "report-plots" }, h("h3", {}, "Plots"), planePictures(sol), plotsSection(sol)) : "",
       h("footer", { class: "signature" },
         h("p", {}, `Date: ${now.toISOString().slice(0, 10)}`),

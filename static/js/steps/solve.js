@@ -92,6 +92,19 @@ export function residualTable(solution) {
   );
 }
 
+/**
+ * A note under the residual table where a row's 95 % bound is below its
+ * predicted figure: the prediction carries the scatter of that row's own
+ * readings, which will not be on the rotor once the weights are fitted, and
+ * the bound is for the vibration that will really remain (method.md 8.6–8.8).
+ */
+export function residualNote(solution) {
+  const below = (solution.predicted_residual || []).filter((r) => r.amplitude_95 !== undefined && r.amplitude_95 !== null && r.amplitude_95 < r.amplitude);
+  if (!below.length) return "";
+  return h("p", { class: "note residual-note" },
+    `${below.length === 1 ? "One row's" : `${below.length} rows'`} 95 % bound is below the predicted figure. That is not a mistake: the predicted figure also carries the scatter of that row's own readings, which will not be on the rotor once the weights are fitted, while the bound is for the vibration that will really remain, judged from all the rows together.`);
+}
+
 /** Whether any correction of the answer is not to be trusted as it stands (words.js). */
 export function unsure(solution) {
   return (solution.corrections || []).some((c) => doubt(solution, c));

@@ -2,6 +2,7 @@
 //! trim from stored coefficients (its zero run read from CSV), a multi-speed
 //! job's Bode plots and identification, and the page's weight.
 
+pub mod answer_notes;
 pub mod kit;
 pub mod kit_fit;
 pub mod kit_support;

@@ -124,7 +124,7 @@ async fn a_server_error_naming_a_set_up_field_brings_the_set_up_back_with_the_fi
           { field: 'planes[1].radius_mm', message: 'the radius of 1e9 mm is beyond the plausible limit' },
           'runs[0].')));
     "#;
-    let found = b.client.execute_async(script, vec![]).await.unwrap();
+    let found = crate::harness::steps::js_async(b, script).await;
     assert_eq!(found, json!(true));
     let setup_shown = b
         .client

@@ -5,6 +5,7 @@
 use crate::common;
 
 use crate::harness::stand::Stand;
+use crate::harness::steps::js_async;
 use crate::harness::{form, Browser};
 use fantoccini::Locator;
 use serde_json::{json, Value};
@@ -243,11 +244,7 @@ async fn a_correction_with_uncertainty_reads_as_mass_and_angle_plus_or_minus_and
                 look(c), look(lost)]);
         });
     "#;
-    let got = b
-        .client
-        .execute_async(script, vec![])
-        .await
-        .expect("module runs");
+    let got = js_async(b, script).await;
     assert_eq!(
         got,
         json!([

@@ -5,12 +5,10 @@
 use crate::common;
 use crate::support;
 
-use std::time::Duration;
-
 use reqwest::header::{CONTENT_TYPE, ORIGIN};
 use serde_json::json;
 
-use common::{example, fresh_server, post, send, start_server, start_server_configured};
+use common::{example, fresh_server, post, send, start_server};
 use support::exchange;
 
 #[tokio::test]
@@ -124,21 +122,16 @@ async fn a_write_that_is_not_json_is_refused_with_415_and_changes_nothing() {
 
 #[tokio::test]
 async fn an_announced_body_over_the_limit_gets_413_before_it_is_sent() {
-    let dir = tempfile::tempdir().unwrap();
-    // A short request time limit: were the body awaited, the answer would be 408.
-    let (addr, server) = start_server_configured(&dir.path().join("t.db"), |s| {
-        s.with_request_timeout(Duration::from_secs(3))
+    let answer = support::answer_to_head(|addr| {
+        format!(
+            "POST /api/v1/sessions HTTP/1.1\r\nHost: {addr}\r\nContent-Type: application/json\r\n\
+             Content-Length: {}\r\n\r\n{{",
+            fieldbal::http::DEFAULT_BODY_LIMIT + 1
+        )
     })
     .await;
-    let request = format!(
-        "POST /api/v1/sessions HTTP/1.1\r\nHost: {addr}\r\nContent-Type: application/json\r\n\
-         Content-Length: {}\r\n\r\n{{",
-        fieldbal::http::DEFAULT_BODY_LIMIT + 1
-    );
-    let answer = exchange(addr, request.as_bytes()).await.expect("an answer");
     assert_eq!(answer.status, 413);
     assert_eq!(answer.json()["error"]["code"], "body_too_large");
-    server.shutdown().await;
 }
 
 #[tokio::test]

@@ -22,6 +22,15 @@ pub async fn js(b: &Browser, script: &str) -> Value {
     b.client.execute(script, vec![]).await.expect("script runs")
 }
 
+/// The answer of an asynchronous script: one that calls `arguments[0]` (its
+/// `done`) when it has finished, such as one importing the page's modules.
+pub async fn js_async(b: &Browser, script: &str) -> Value {
+    b.client
+        .execute_async(script, vec![])
+        .await
+        .expect("script runs")
+}
+
 /// Every message a speed list, a phase or a decimal comma can get is the one the rule states.
 pub async fn typed_mistakes_are_refused_with_the_reason(b: &Browser) {
     let speeds = field("speeds");

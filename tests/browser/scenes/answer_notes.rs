@@ -5,6 +5,7 @@
 //! browser; imported jobs (tests/browser/import.rs) run them in turn.
 
 use crate::harness::stand::Stand;
+use crate::harness::steps::js_async;
 
 /// `regions_unreliable` has two causes (uncertainty/hidden.rs): planes alike
 /// to the sensors, or a small trial beside planes without a warning (session
@@ -24,11 +25,7 @@ pub async fn the_job_level_warning_says_whether_a_small_trial_or_alike_planes_sp
                 m.doubt({ warnings: [weak] }, p1), m.doubt({ warnings: [alike] }, p1)]);
         });
     "#;
-    let got = b
-        .client
-        .execute_async(script, vec![])
-        .await
-        .expect("module runs");
+    let got = js_async(b, script).await;
     let text = |v: &serde_json::Value| v.to_string();
     assert!(
         text(&got[0]).contains("A trial weight was too small")
@@ -69,11 +66,7 @@ pub async fn a_bound_below_the_prediction_and_an_agreeing_row_above_its_bound_ar
                 words(a.runChecks(check(9.5, false)).querySelector('.check-note'))]);
         });
     "#;
-    let got = b
-        .client
-        .execute_async(script, vec![])
-        .await
-        .expect("modules run");
+    let got = js_async(b, script).await;
     let said = |i: usize| got[i].as_str().unwrap_or_default().to_string();
     assert!(
         said(0).starts_with("One row's 95 % bound is below the predicted figure")

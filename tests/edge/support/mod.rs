@@ -40,6 +40,23 @@ impl Answer {
 
 /// Send `request` as it is and read one answer (or `None` if the server
 /// closes without answering).
+/// The answer to a request whose head only is sent (`head` given the
+/// server's address), from a fresh service with a 3 s request time limit:
+/// were the body awaited, the answer would be 408, so a 4xx other than that
+/// was given before the body was read.
+pub async fn answer_to_head(head: impl FnOnce(SocketAddr) -> String) -> Answer {
+    let dir = tempfile::tempdir().unwrap();
+    let (addr, server) = crate::common::start_server_configured(&dir.path().join("t.db"), |s| {
+        s.with_request_timeout(Duration::from_secs(3))
+    })
+    .await;
+    let answer = exchange(addr, head(addr).as_bytes())
+        .await
+        .expect("an answer");
+    server.shutdown().await;
+    answer
+}
+
 pub async fn exchange(addr: SocketAddr, request: &[u8]) -> Option<Answer> {
     let mut stream = TcpStream::connect(addr).await.expect("connect");
     stream.write_all(request).await.expect("request sent");

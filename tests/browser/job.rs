@@ -206,6 +206,7 @@ async fn a_whole_job_runs_in_the_browser_from_set_up_to_a_signed_report() {
     // Check runs carry weights but are no trials: the count is of planes tried.
     let lead = b.text("#step-runs p.lead").await;
     assert!(lead.contains("(2 of 2)"), "{lead}");
+    crate::scenes::names::a_trial_after_check_runs_is_numbered_by_trials(b).await;
     b.click("#step-runs button.go-solve").await;
     b.click("details.options summary").await;
     type_into(b, &field("options.limit"), "5").await;

@@ -27,6 +27,19 @@ export function checkRuns() {
   });
 }
 
+/**
+ * Trial runs so far: runs with weights that are no check runs. Check runs are
+ * known as checkRuns() above knows them (named "check…", as the form
+ * names them, or stored after every plane's trial), except that a run the
+ * technician named "trial…" stays a trial (a second trial in a tried plane).
+ * Every run with weights was counted, so after a check run the next trial
+ * was proposed as "trial 4" in a two-plane job.
+ */
+export function trialCount() {
+  const checks = new Set(checkRuns().filter((r) => !/^trial/i.test(r.id)).map((r) => r.id));
+  return state.runs.filter((r) => r.weights.length > 0 && !checks.has(r.id) && !/^check/i.test(r.id)).length;
+}
+
 /** The run a trim starts from by default: the last check run, if one is stored after the trials. */
 export function defaultFromRun() {
   const checks = checkRuns();

@@ -10,6 +10,7 @@ import { api, ApiError } from "../job/api.js";
 import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
+import { trialCount } from "./options.js";
 
 function angleWords() {
   return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
@@ -40,7 +41,7 @@ function freeName(base) {
  */
 export function newDraft(kind = "trial", weights = null, fromRun = null) {
   const isZero = !referenceRun();
-  const trials = state.runs.filter((r) => r.weights.length > 0).length;
+  const trials = trialCount();
   const planes = state.setup.planes;
   const ownWeights = isZero
     ? []

@@ -8,6 +8,7 @@ pub mod kit_fit;
 pub mod kit_support;
 pub mod machine;
 pub mod multispeed;
+pub mod names;
 pub mod noise;
 pub mod options;
 

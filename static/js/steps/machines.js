@@ -10,6 +10,13 @@ import { fmt } from "../page/num.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
 
+/**
+ * A machine's name, or "" when it has none: the service asks for a name, so
+ * the form stores the id as the name when none is typed, and the id was then
+ * shown twice ("Machine ID-FAN-3 · ID-FAN-3", and again in the list's Name column).
+ */
+const nameOf = (m) => (m.name && m.name.trim() !== m.id ? m.name : "");
+
 const when = (t) => (t ? String(t).replace("T", " ").replace(/:\d\d(\.\d+)?Z$/, " UTC") : "");
 
 /**
@@ -78,7 +85,7 @@ async function machinePage(root, id, go) {
   const coefficients = m.coefficients || [];
   const solved = sessions.filter((x) => x.summary).map((x) => x.id);
   replace(root,
-    h("h2", {}, `Machine ${m.name || m.id}`, h("small", {}, ` · ${m.id}`)),
+    h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),
     m.rotor ? h("p", {}, `Rotor: ${fmt(m.rotor.mass_kg, 0)} kg, service speed ${fmt(m.rotor.service_speed_rpm, 0)} rpm${m.rotor.balance_grade ? `, balance grade ${m.rotor.balance_grade}` : ""}.`) : "",
     h("div", { class: "actions" },
       h("button", { type: "button", class: "primary new-job", onclick: async () => go.newJob(await setupOfLatest(m), null) }, "New job for this machine"),
@@ -149,7 +156,7 @@ export async function renderMachines(root, go) {
     more);
   const row = (x) => h("tr", {},
     h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
-    h("td", {}, x.name || ""), h("td", {}, when(x.created_at)));
+    h("td", { class: nameOf(x) ? "name" : "name none" }, nameOf(x) || "–"), h("td", {}, when(x.created_at)));
   // A page at a time (newest first): only the first 100 were shown, and a
   // fleet's older machines could not be reached from the form.
   let shown = 0;

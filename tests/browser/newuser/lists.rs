@@ -1,7 +1,10 @@
-//! Every stored session and machine reachable from its list, a page at a time.
+//! Every stored session and machine reachable from its list, a page at a time;
+//! a machine stored without a name shows its id once.
 
 use super::texts;
-use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::form::{field, type_into};
+use crate::harness::stand::{example_session, get, post, Stand};
+use crate::harness::steps::js;
 use serde_json::json;
 
 pub async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
@@ -68,4 +71,28 @@ pub async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
     .await;
     let ids = texts(b, "#step-machines button.open-machine").await;
     assert_eq!(ids[101], "M-000", "the oldest is reachable");
+    a_machine_without_a_name_shows_its_id_once(stand).await;
+}
+
+/// The service asks for a name, so the form stores the id as the name when
+/// none is typed (as the machines above were stored): the id was then shown
+/// twice, in the list's Machine and Name columns and in the page's heading
+/// ("Machine FAN-2 · FAN-2"). Fails without the fix in static/js/steps/machines.js.
+async fn a_machine_without_a_name_shows_its_id_once(stand: &Stand) {
+    let b = &stand.browser;
+    let row = js(b, "const r = document.querySelector('#step-machines button.open-machine[data-id=\"M-000\"]').closest('tr'); return [r.children[0].textContent, r.children[1].textContent]").await;
+    assert_eq!(row, json!(["M-000", "–"]), "the id once, no name");
+    // Stored from the form with the name left empty.
+    type_into(b, &field("machine.id"), "FAN-2").await;
+    b.click("button.create-machine").await;
+    b.wait_until(
+        "the new machine's page",
+        "const e = document.querySelector('#step-machines h2'); return !!e && e.textContent.includes('FAN-2') && !!document.querySelector('#step-machines table.machine-jobs')",
+    )
+    .await;
+    assert_eq!(
+        get(stand, "/api/v1/machines/FAN-2").await["name"],
+        json!("FAN-2")
+    );
+    assert_eq!(b.text("#step-machines h2").await, "Machine FAN-2");
 }

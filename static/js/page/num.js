@@ -154,3 +154,17 @@ export function commonUnit(rows) {
   const units = new Set((rows || []).map((r) => r.unit).filter(Boolean));
   return units.size === 1 ? unitLabel([...units][0]) : "";
 }
+
+/**
+ * When a session, machine or coefficient version was stored, as one text on
+ * every page: "2026-11-24 06:25 UTC". The service stores RFC 3339 times in UTC
+ * (…T06:25:39.123Z); the day in ISO order and the zone said match the
+ * machine trend's axis (UTC) and the report's ISO date. The Sessions page
+ * showed the browser's local format instead ("11/24/2026, 7:25:39 AM"), the
+ * Machines page this one. A text that is no time is shown as it is.
+ */
+export function storedAt(t) {
+  const d = t ? new Date(t) : null;
+  if (!d || Number.isNaN(d.getTime())) return t ? String(t) : "";
+  return `${d.toISOString().slice(0, 16).replace("T", " ")} UTC`;
+}

@@ -6,7 +6,7 @@
 import { h, s, replace, $ } from "../page/dom.js";
 import { banner, textInput, numberInput, selectInput, markServerError, clearMarks } from "../page/fields.js";
 import { checkRotor, GRADE_CHOICES } from "./setup.js";
-import { fmt } from "../page/num.js";
+import { fmt, storedAt } from "../page/num.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
 
@@ -16,8 +16,6 @@ import { state, setupOf, emptySetup } from "../job/state.js";
  * shown twice ("Machine ID-FAN-3 · ID-FAN-3", and again in the list's Name column).
  */
 const nameOf = (m) => (m.name && m.name.trim() !== m.id ? m.name : "");
-
-const when = (t) => (t ? String(t).replace("T", " ").replace(/:\d\d(\.\d+)?Z$/, " UTC") : "");
 
 /**
  * Each job's date on the trend's axis: the day; below it the time when another
@@ -104,14 +102,14 @@ async function machinePage(root, id, go) {
       h("thead", {}, h("tr", {}, h("th", {}, "Job"), h("th", {}, "Stored"), h("th", {}, "Runs"), h("th", {}, "Vibration before: RMS, largest"), h("th", {}, "After (predicted): RMS, largest"))),
       h("tbody", {}, sessions.length === 0 ? h("tr", {}, h("td", { colspan: 5 }, "No jobs for this machine yet.")) : sessions.map((x) => h("tr", {},
         h("td", {}, h("button", { type: "button", class: "link open-session", onclick: () => go.openSession(x.id) }, x.name || x.id)),
-        h("td", {}, when(x.created_at)), h("td", {}, String(x.runs ?? "")),
+        h("td", {}, storedAt(x.created_at)), h("td", {}, String(x.runs ?? "")),
         x.summary ? [h("td", { class: "before" }, `${fmt(x.summary.rms_before, 1)}, ${fmt(x.summary.max_before, 1)}`), h("td", { class: "after" }, `${fmt(x.summary.rms_after, 1)}, ${fmt(x.summary.max_after, 1)}`)]
           : h("td", { colspan: 2 }, "not solved")))))),
     h("h3", {}, "Coefficient versions"),
     coefficients.length === 0 ? h("p", { class: "hint" }, "None stored yet. Solve a job with trial runs, then store the coefficients from it: later jobs can trim with only a reference run.")
       : h("table", { class: "coeff-versions" },
         h("thead", {}, h("tr", {}, h("th", {}, "Version"), h("th", {}, "Stored"), h("th", {}, "From jobs"))),
-        h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, when(c.created_at)), h("td", {}, String((c.sessions || []).length)))))),
+        h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, storedAt(c.created_at)), h("td", {}, String((c.sessions || []).length)))))),
   );
 }
 
@@ -156,7 +154,7 @@ export async function renderMachines(root, go) {
     more);
   const row = (x) => h("tr", {},
     h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
-    h("td", { class: nameOf(x) ? "name" : "name none" }, nameOf(x) || "–"), h("td", {}, when(x.created_at)));
+    h("td", { class: nameOf(x) ? "name" : "name none" }, nameOf(x) || "–"), h("td", {}, storedAt(x.created_at)));
   // A page at a time (newest first): only the first 100 were shown, and a
   // fleet's older machines could not be reached from the form.
   let shown = 0;

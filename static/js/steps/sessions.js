@@ -3,6 +3,7 @@
 
 import { h, replace, download, fileStem } from "../page/dom.js";
 import { banner } from "../page/fields.js";
+import { storedAt } from "../page/num.js";
 import { api } from "../job/api.js";
 import { state, sessionJson, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
@@ -15,12 +16,6 @@ function items(data) {
   if (Array.isArray(data)) return data;
   for (const key of ["items", "sessions", "data", "results"]) if (data && Array.isArray(data[key])) return data[key];
   return [];
-}
-
-/** An RFC 3339 time as local date and time. */
-function when(rfc3339) {
-  const t = rfc3339 ? new Date(rfc3339) : null;
-  return t && !Number.isNaN(t.getTime()) ? t.toLocaleString() : rfc3339 || "";
 }
 
 /** A CSV field: quoted, and guarded against spreadsheet formulas. */
@@ -104,7 +99,7 @@ export async function renderSessions(root, open, imported) {
   const row = (x) => h("tr", {},
     h("td", {}, h("button", { type: "button", class: "link open-session", dataset: { id: x.id }, onclick: () => open(x.id) }, x.name ?? x.id)),
     h("td", {}, x.machine ?? ""),
-    h("td", {}, when(x.created_at), x.runs !== undefined ? h("small", {}, ` · ${x.runs} run${x.runs === 1 ? "" : "s"}`) : ""),
+    h("td", {}, storedAt(x.created_at), x.runs !== undefined ? h("small", {}, ` · ${x.runs} run${x.runs === 1 ? "" : "s"}`) : ""),
     h("td", {}, h("button", { type: "button", class: "small delete", onclick: async () => {
       if (!window.confirm(`Delete the stored session “${x.name ?? x.id}”?`)) return;
       try { await api.deleteSession(x.id); renderSessions(root, open, imported); } catch (err) { banner(root, "error", err.message); }

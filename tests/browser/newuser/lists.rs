@@ -1,11 +1,12 @@
 //! Every stored session and machine reachable from its list, a page at a time;
-//! a machine stored without a name shows its id once.
+//! a machine stored without a name shows its id once, and both lists give the
+//! time each was stored in one format.
 
 use super::texts;
 use crate::harness::form::{field, type_into};
 use crate::harness::stand::{example_session, get, post, Stand};
 use crate::harness::steps::js;
-use serde_json::json;
+use serde_json::{json, Value};
 
 pub async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
     let b = &stand.browser;
@@ -72,6 +73,7 @@ pub async fn every_stored_session_can_be_reached_from_the_list(stand: &Stand) {
     let ids = texts(b, "#step-machines button.open-machine").await;
     assert_eq!(ids[101], "M-000", "the oldest is reachable");
     a_machine_without_a_name_shows_its_id_once(stand).await;
+    both_lists_show_when_stored_alike(stand).await;
 }
 
 /// The service asks for a name, so the form stores the id as the name when
@@ -95,4 +97,32 @@ async fn a_machine_without_a_name_shows_its_id_once(stand: &Stand) {
         json!("FAN-2")
     );
     assert_eq!(b.text("#step-machines h2").await, "Machine FAN-2");
+}
+
+/// The Sessions page gave the browser's local time in its own format
+/// ("11/24/2026, 7:25:39 AM"), the Machines page "2026-11-24 06:25 UTC": now
+/// both the latter, from the stored RFC 3339 time in UTC (unchanged in the
+/// store). Fails without the fix in static/js/steps/sessions.js.
+async fn both_lists_show_when_stored_alike(stand: &Stand) {
+    let b = &stand.browser;
+    let shown = |t: &Value| {
+        let t = t.as_str().unwrap();
+        assert!(t.ends_with('Z'), "stored in UTC: {t}");
+        format!("{} {} UTC", &t[..10], &t[11..16])
+    };
+    b.click("nav [data-step=\"machines\"]").await;
+    b.wait_for("#step-machines button.open-machine[data-id=\"FAN-2\"]")
+        .await;
+    let machines = get(stand, "/api/v1/machines?limit=5").await;
+    for m in machines["machines"].as_array().unwrap() {
+        let cell = js(b, &format!("return document.querySelector('#step-machines button.open-machine[data-id={}]').closest('tr').children[2].textContent", serde_json::to_string(m["id"].as_str().unwrap()).unwrap())).await;
+        assert_eq!(cell, json!(shown(&m["created_at"])), "machine {}", m["id"]);
+    }
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.wait_for("#step-sessions button.open-session").await;
+    let sessions = get(stand, "/api/v1/sessions?limit=5").await;
+    for x in sessions["sessions"].as_array().unwrap() {
+        let cell = js(b, &format!("return document.querySelector('#step-sessions button.open-session[data-id={}]').closest('tr').children[2].firstChild.textContent", serde_json::to_string(x["id"].as_str().unwrap()).unwrap())).await;
+        assert_eq!(cell, json!(shown(&x["created_at"])), "session {}", x["id"]);
+    }
 }

@@ -234,10 +234,11 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
 
     // Coefficients' noise beside their signal: the trial too small to trust (issue 12).
     super::warn_untrusted(fit, &prop, &kappas, solution);
-    // Nearly alike planes: every plane's region may be off (issue 12), also
-    // where only the coefficients' noise makes them look told apart.
+    // Nearly alike planes or a small trial beside the others: every plane's
+    // region may be off (issue 12), also where only the coefficients' noise
+    // makes the planes look told apart.
     let shares = super::hidden::denoised_shares(fit, options, &prop, cov);
-    super::hidden::warn_hidden_residual(fit, shares.as_deref(), solution);
+    super::hidden::warn_regions_unreliable(fit, shares.as_deref(), solution);
 
     let min_max = options.objective == Some(Objective::MinMax);
     let bound = solution

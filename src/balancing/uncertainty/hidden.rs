@@ -153,8 +153,10 @@ pub fn denoised_shares(
 
 /// Add the job-level `regions_unreliable` wherever a plane is
 /// `ill_conditioned`, or `denoised` (per plane of `fit.planes`,
-/// [`denoised_shares`]) puts a plane's own share below the same threshold.
-pub fn warn_hidden_residual(fit: &Fit, denoised: Option<&[f64]>, solution: &mut Solution) {
+/// [`denoised_shares`]) puts a plane's own share below the same threshold,
+/// or, with coefficients from the trials, a plane is `trial_effect_small`
+/// and another is not (module doc, session 18).
+pub fn warn_regions_unreliable(fit: &Fit, denoised: Option<&[f64]>, solution: &mut Solution) {
     let planes: Vec<&str> = solution
         .warnings
         .iter()
@@ -164,21 +166,15 @@ pub fn warn_hidden_residual(fit: &Fit, denoised: Option<&[f64]>, solution: &mut 
     let session = fit.checked.session;
     // Small trials (session 18): only where the trials estimate the
     // coefficients, and only with another plane to warn of.
-    let small: Vec<&str> = if fit.t_pinv.is_some() {
-        solution
-            .warnings
-            .iter()
-            .filter(|w| w.code == "trial_effect_small")
-            .filter_map(|w| w.plane.as_deref())
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let small = if small.len() < fit.planes.len() {
-        small
-    } else {
-        Vec::new()
-    };
+    let mut small: Vec<&str> = solution
+        .warnings
+        .iter()
+        .filter(|w| fit.t_pinv.is_some() && w.code == "trial_effect_small")
+        .filter_map(|w| w.plane.as_deref())
+        .collect();
+    if small.len() >= fit.planes.len() {
+        small.clear();
+    }
     let hidden: Vec<(String, f64)> = denoised
         .unwrap_or(&[])
         .iter()

@@ -42,6 +42,7 @@ static ASSETS: &[Asset] = &[
     asset!("js/page/dom.js", JS),
     asset!("js/page/fields.js", JS),
     asset!("js/page/num.js", JS),
+    asset!("js/page/paged.js", JS),
     asset!("js/plots/bode.js", JS),
     asset!("js/plots/plots.js", JS),
     asset!("js/plots/polar.js", JS),

@@ -7,6 +7,7 @@ import { h, s, replace, $ } from "../page/dom.js";
 import { banner, textInput, numberInput, selectInput, markServerError, clearMarks } from "../page/fields.js";
 import { checkRotor, GRADE_CHOICES } from "./setup.js";
 import { fmt, storedAt } from "../page/num.js";
+import { pagedList } from "../page/paged.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
 
@@ -140,10 +141,10 @@ function newMachineForm(root, go) {
     } }, "Store machine"));
 }
 
-/** The machines page: one machine when `state.machineId` is set, else the list. */
 /** Machines listed at a time. */
 const MACHINES_PAGE = 100;
 
+/** The machines page: one machine when `state.machineId` is set, else the list. */
 export async function renderMachines(root, go) {
   if (state.machineId) return machinePage(root, state.machineId, go);
   const list = h("tbody", {}, h("tr", {}, h("td", { colspan: 3 }, "Loading…")));
@@ -157,30 +158,12 @@ export async function renderMachines(root, go) {
     h("td", { class: nameOf(x) ? "name" : "name none" }, nameOf(x) || "–"), h("td", {}, storedAt(x.created_at)));
   // A page at a time (newest first): only the first 100 were shown, and a
   // fleet's older machines could not be reached from the form.
-  let shown = 0;
-  const page = async () => {
-    const data = await api.listMachines(MACHINES_PAGE, shown);
-    const found = (data && data.machines) || [];
-    shown += found.length;
-    return { found, total: data && typeof data.total === "number" ? data.total : shown };
-  };
-  const moreOrNot = (total) => replace(more, shown < total ? [
-    h("span", { class: "hint" }, `The ${shown} newest of ${total} machines. `),
-    h("button", { type: "button", class: "small more-machines", onclick: async () => {
-      try {
-        const next = await page();
-        list.append(...next.found.map(row));
-        moreOrNot(next.total);
-      } catch (err) {
-        banner(root, "error", `Could not list more machines: ${err.message}`);
-      }
-    } }, `Show ${Math.min(MACHINES_PAGE, total - shown)} more`),
-  ] : "");
-  try {
-    const first = await page();
-    replace(list, first.found.length === 0 ? h("tr", {}, h("td", { colspan: 3 }, "No machines yet.")) : first.found.map(row));
-    moreOrNot(first.total);
-  } catch (err) {
-    replace(list, h("tr", {}, h("td", { colspan: 3 }, `Could not list machines: ${err.message}`)));
-  }
+  await pagedList({
+    root, list, more, row, pageSize: MACHINES_PAGE, columns: 3,
+    what: "machines", shownAs: "machines", empty: "No machines yet.",
+    fetchPage: async (limit, offset) => {
+      const data = await api.listMachines(limit, offset);
+      return { found: (data && data.machines) || [], total: data && data.total };
+    },
+  });
 }

@@ -4,6 +4,7 @@
 import { h, replace, download, fileStem } from "../page/dom.js";
 import { banner } from "../page/fields.js";
 import { storedAt } from "../page/num.js";
+import { pagedList } from "../page/paged.js";
 import { api } from "../job/api.js";
 import { state, sessionJson, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
@@ -106,31 +107,12 @@ export async function renderSessions(root, open, imported) {
     } }, "Delete")));
   // The service lists a page at a time (newest first): only the 50 newest
   // were shown, and older sessions could not be reached from the form.
-  let shown = 0;
-  const page = async () => {
-    const data = await api.listSessions(SESSIONS_PAGE, shown);
-    const found = items(data);
-    shown += found.length;
-    const total = data && typeof data.total === "number" ? data.total : shown;
-    return { found, total };
-  };
-  const moreOrNot = (total) => replace(more, shown < total ? [
-    h("span", { class: "hint" }, `The ${shown} newest of ${total} stored sessions. `),
-    h("button", { type: "button", class: "small more-sessions", onclick: async () => {
-      try {
-        const next = await page();
-        list.append(...next.found.map(row));
-        moreOrNot(next.total);
-      } catch (err) {
-        banner(root, "error", `Could not list more sessions: ${err.message}`);
-      }
-    } }, `Show ${Math.min(SESSIONS_PAGE, total - shown)} more`),
-  ] : "");
-  try {
-    const first = await page();
-    replace(list, first.found.length === 0 ? h("tr", {}, h("td", { colspan: 4 }, "No stored sessions yet.")) : first.found.map(row));
-    moreOrNot(first.total);
-  } catch (err) {
-    replace(list, h("tr", {}, h("td", { colspan: 4 }, `Could not list sessions: ${err.message}`)));
-  }
+  await pagedList({
+    root, list, more, row, pageSize: SESSIONS_PAGE, columns: 4,
+    what: "sessions", shownAs: "stored sessions", empty: "No stored sessions yet.",
+    fetchPage: async (limit, offset) => {
+      const data = await api.listSessions(limit, offset);
+      return { found: items(data), total: data && data.total };
+    },
+  });
 }

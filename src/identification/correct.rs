@@ -9,10 +9,29 @@
 //! Groups 2 and 3 fix the scale when masses are estimated; when every mass is
 //! known (no mass parameters) only group 1 is used, and shapes may have any
 //! scale. Rows are weighted by `G` (the modes' weights) after scaling each
-//! group to be dimensionless, and solved through the SVD. Shapes measured at
-//! some degrees of freedom only are completed from the current model's mode
-//! (best MAC on the measured entries, scaled to them), and the solve repeated
-//! until the parameters settle.
+//! group to be dimensionless, and solved through the SVD.
+//!
+//! Shapes measured at some degrees of freedom only: the unmeasured entries
+//! are unknowns too, and the same equations (now bilinear) are solved for
+//! parameters and entries together by Gauss–Newton with a halving line
+//! search, from the starting parameters and, for each mode, the entries that
+//! best satisfy its equations 1 with them (a mode measured nowhere: the
+//! vector they most nearly annul, mass-normalised; with every mass known it
+//! gets the row `vⱼᵀ M vⱼ = 1`, as its scale is free). Until session 19 the
+//! entries were taken from the current model's mode of best MAC on the
+//! measured entries and the linear solve repeated: with one measured entry
+//! every mode has a MAC of 1, the pick was rounding noise, and a partly
+//! measured 2-mass chain answered `not_converged` from any start (or settled
+//! on a wrong model).
+//!
+//! What the data cannot give is refused naming `modes`: fewer equations than
+//! unknowns (`too_few_equations`), or equations that leave a direction of
+//! parameters and entries free at the fitted model (`unidentifiable`). With
+//! every mass known a shape's scale is free, so a shape measured at one
+//! degree of freedom tells nothing but its frequency: such data are answered
+//! when the frequencies determine the parameters, but frequencies alone may
+//! fit several models (a 2-mass chain's two springs: two models), and the
+//! one nearest the starting parameters is found.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -24,6 +43,20 @@ use crate::balancing::InputError;
 pub const MAX_ITERATIONS: usize = 200;
 /// Relative change of the parameters at which the iteration stops.
 pub const TOLERANCE: f64 = 1e-10;
+/// Most entries of the equations' matrix (equations × unknowns): 64 MB, a
+/// few times that for the SVD. The largest fully measured model the body
+/// limit lets through (200 degrees of freedom, 200 modes, masses estimated,
+/// 50 parameter matrices) needs about half.
+pub const MAX_ENTRIES: usize = 1 << 23;
+/// With shapes partly measured, the largest relative distance of a measured
+/// frequency from the nearest of the corrected model's. The equations can
+/// also be made small by shrinking stiffness and unmeasured entries
+/// together: from a start a third of the true springs, a 2-mass chain
+/// settled at 0.4 and 0.6 times its true frequencies, a minimum of the sum
+/// but no fit. Measured frequencies are good to a percent or so.
+pub const FREQUENCY_MATCH: f64 = 0.1;
+/// Halvings of a Gauss–Newton step before the line search gives up.
+const HALVINGS: usize = 60;
 
 fn assemble(c: &Checked, p: &[f64]) -> (DMatrix<f64>, DMatrix<f64>) {
     let nm = c.mi.len();
@@ -38,134 +71,252 @@ fn assemble(c: &Checked, p: &[f64]) -> (DMatrix<f64>, DMatrix<f64>) {
     (m, k)
 }
 
-/// Complete each shape's unmeasured entries from the model with parameters `p`.
-fn complete(c: &Checked, p: &[f64]) -> Result<Vec<DVector<f64>>, InputError> {
-    let n = c.m0.nrows();
-    let partial = c.shapes.iter().any(|s| s.iter().any(Option::is_none));
-    let model = if partial {
-        let (m, k) = assemble(c, p);
-        Some(modes::solve(&m, &k)?)
-    } else {
-        None
-    };
-    let mut out = Vec::with_capacity(c.shapes.len());
-    for (j, s) in c.shapes.iter().enumerate() {
-        let Some(model) = &model else {
-            out.push(DVector::from_iterator(
-                n,
-                s.iter().map(|x| x.unwrap_or(0.0)),
-            ));
-            continue;
-        };
-        let measured: Vec<usize> = (0..n).filter(|&i| s[i].is_some()).collect();
-        let pick = |col: usize| -> f64 {
-            if measured.is_empty() {
-                return -(model.w2[col] - c.w2[j]).abs();
-            }
-            let phi = model.shapes.column(col);
-            let (mut dot, mut pp, mut vv) = (0.0, 0.0, 0.0);
-            for &i in &measured {
-                let v = s[i].unwrap_or(0.0);
-                dot += v * phi[i];
-                pp += phi[i] * phi[i];
-                vv += v * v;
-            }
-            dot * dot / (pp * vv).max(f64::MIN_POSITIVE)
-        };
-        let best = (0..n)
-            .max_by(|&a, &b| pick(a).total_cmp(&pick(b)))
-            .unwrap_or(0);
-        let phi = model.shapes.column(best);
-        let (mut dot, mut pp) = (0.0, 0.0);
-        for &i in &measured {
-            dot += s[i].unwrap_or(0.0) * phi[i];
-            pp += phi[i] * phi[i];
-        }
-        let alpha = if measured.is_empty() || pp == 0.0 {
-            1.0
-        } else {
-            dot / pp
-        };
-        out.push(DVector::from_fn(n, |i, _| s[i].unwrap_or(alpha * phi[i])));
-    }
-    Ok(out)
+/// The problem's layout: parameters, then the unmeasured entries (mode, dof)
+/// in order; the weights of the equations, fixed at the start.
+struct Layout {
+    n: usize,
+    nm: usize,
+    params: usize,
+    /// Per mode, the columns of its unmeasured entries: (dof, column).
+    unknown: Vec<Vec<(usize, usize)>>,
+    /// Modes measured nowhere, given the row `vᵀ M v = 1` (known masses only).
+    scale_rows: Vec<usize>,
+    rows: usize,
+    /// Group 1's weight per mode.
+    s: Vec<f64>,
 }
 
-/// One weighted least-squares solve with the shapes `v`; the parameters and the residual RMS.
-fn solve_once(c: &Checked, v: &[DVector<f64>], p: &[f64]) -> Result<(Vec<f64>, f64), InputError> {
-    let n = c.m0.nrows();
-    let (nm, nk) = (c.mi.len(), c.ki.len());
-    let normalised = nm > 0;
-    let (m_now, _) = assemble(c, p);
-    let mass_scale = (m_now.trace() / n as f64).abs().max(f64::MIN_POSITIVE);
-    let modes = v.len();
-    let pairs = if normalised { modes * (modes + 1) } else { 0 };
-    let rows = modes * n + pairs;
-    let mut a = DMatrix::zeros(rows, nm + nk);
-    let mut b = DVector::zeros(rows);
-    let mut r = 0;
-    for (j, vj) in v.iter().enumerate() {
-        let w2 = c.w2[j];
-        // Group 1, in units of M v Ω², made dimensionless.
-        let s = c.weights[j] / (w2 * mass_scale * vj.norm().max(f64::MIN_POSITIVE));
-        let rhs = -((&c.k0 - &c.m0 * w2) * vj);
-        for i in 0..n {
-            for (l, ml) in c.mi.iter().enumerate() {
-                a[(r + i, l)] = -w2 * (ml.row(i) * vj)[(0, 0)] * s;
-            }
-            for (l, kl) in c.ki.iter().enumerate() {
-                a[(r + i, nm + l)] = (kl.row(i) * vj)[(0, 0)] * s;
-            }
-            b[r + i] = rhs[i] * s;
-        }
-        r += n;
-    }
-    if normalised {
-        for i in 0..modes {
-            for j in i..modes {
-                let g = (c.weights[i] * c.weights[j]).sqrt();
-                let delta = if i == j { 1.0 } else { 0.0 };
-                let (vi, vj) = (&v[i], &v[j]);
-                for (l, ml) in c.mi.iter().enumerate() {
-                    a[(r, l)] = vi.dot(&(ml * vj)) * g;
-                }
-                b[r] = (delta - vi.dot(&(&c.m0 * vj))) * g;
-                r += 1;
-                let s = g / (c.w2[i] * c.w2[j]).sqrt();
-                for (l, kl) in c.ki.iter().enumerate() {
-                    a[(r, nm + l)] = vi.dot(&(kl * vj)) * s;
-                }
-                b[r] = (c.w2[j] * delta - vi.dot(&(&c.k0 * vj))) * s;
-                r += 1;
-            }
-        }
-    }
-    let x = lsq::solve(a.clone(), &b, "the model-correction equations")?;
-    let residual = lsq::rms((&a * &x - &b).iter().copied());
-    Ok((x.iter().copied().collect(), residual))
-}
-
-/// Correct the model: estimate its parameters from the measured modes.
-pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
-    let c = model::check(req)?;
-    let partial = c.shapes.iter().any(|s| s.iter().any(Option::is_none));
-    let mut p = c.initial.clone();
-    let mut iterations = 0;
-    let mut residual;
-    loop {
-        iterations += 1;
-        let v = complete(&c, &p)?;
-        let (next, res) = solve_once(&c, &v, &p)?;
-        residual = res;
-        let change = next
+impl Layout {
+    fn new(c: &Checked) -> Layout {
+        let n = c.m0.nrows();
+        let (nm, nk) = (c.mi.len(), c.ki.len());
+        let params = nm + nk;
+        let mut col = params;
+        let unknown: Vec<Vec<(usize, usize)>> = c
+            .shapes
             .iter()
-            .zip(&p)
-            .map(|(a, b)| (a - b).powi(2))
-            .sum::<f64>()
-            .sqrt();
-        let size = next.iter().map(|a| a * a).sum::<f64>().sqrt();
-        p = next;
-        if !partial || change <= TOLERANCE * (1.0 + size) {
+            .map(|s| {
+                (0..n)
+                    .filter(|&i| s[i].is_none())
+                    .map(|i| {
+                        col += 1;
+                        (i, col - 1)
+                    })
+                    .collect()
+            })
+            .collect();
+        let modes = c.shapes.len();
+        let scale_rows: Vec<usize> = if nm == 0 {
+            (0..modes).filter(|&j| unknown[j].len() == n).collect()
+        } else {
+            vec![]
+        };
+        let pairs = if nm > 0 { modes * (modes + 1) } else { 0 };
+        Layout {
+            n,
+            nm,
+            params,
+            rows: modes * n + pairs + scale_rows.len(),
+            unknown,
+            scale_rows,
+            s: vec![],
+        }
+    }
+
+    fn columns(&self) -> usize {
+        self.params + self.unknown.iter().map(Vec::len).sum::<usize>()
+    }
+
+    fn partial(&self) -> bool {
+        self.columns() > self.params
+    }
+
+    /// The shapes with the unknowns `x[params..]` in place.
+    fn shapes(&self, c: &Checked, x: &[f64]) -> Vec<DVector<f64>> {
+        c.shapes
+            .iter()
+            .zip(&self.unknown)
+            .map(|(s, u)| {
+                let mut v = DVector::from_iterator(self.n, s.iter().map(|e| e.unwrap_or(0.0)));
+                for &(i, col) in u {
+                    v[i] = x[col];
+                }
+                v
+            })
+            .collect()
+    }
+}
+
+/// Each mode's unmeasured entries that best satisfy its equations 1 with the
+/// parameters `p` (a mode measured nowhere: the vector `K − Ω² M` most
+/// nearly annuls, scaled to `vᵀ M v = 1` where that is positive).
+fn start_entries(c: &Checked, l: &Layout, p: &[f64]) -> Vec<f64> {
+    let (m, k) = assemble(c, p);
+    let mut out = Vec::new();
+    for (j, s) in c.shapes.iter().enumerate() {
+        let u = &l.unknown[j];
+        if u.is_empty() {
+            continue;
+        }
+        let a = &k - &m * c.w2[j];
+        if u.len() == l.n {
+            let svd = a.clone().svd(false, true);
+            let v_t = svd.v_t.expect("computed");
+            let last = (0..svd.singular_values.len())
+                .min_by(|&x, &y| svd.singular_values[x].total_cmp(&svd.singular_values[y]))
+                .unwrap_or(0);
+            let v: DVector<f64> = v_t.row(last).transpose();
+            let norm = v.dot(&(&m * &v));
+            let scale = if norm > 0.0 { norm.sqrt() } else { 1.0 };
+            out.extend(v.iter().map(|x| x / scale));
+            continue;
+        }
+        let cols: Vec<usize> = u.iter().map(|&(i, _)| i).collect();
+        let au = DMatrix::from_fn(l.n, cols.len(), |r, q| a[(r, cols[q])]);
+        let known = DVector::from_iterator(l.n, s.iter().map(|e| e.unwrap_or(0.0)));
+        let rhs = -(&a * known);
+        let svd = au.svd(true, true);
+        let tol = lsq::RANK_TOLERANCE * svd.singular_values.max();
+        match svd.solve(&rhs, tol) {
+            Ok(x) if x.iter().all(|v| v.is_finite()) => out.extend(x.iter()),
+            _ => out.extend(std::iter::repeat_n(0.0, cols.len())),
+        }
+    }
+    out
+}
+
+/// The weighted equations' residuals at `x` (parameters, then unmeasured
+/// entries) and their Jacobian.
+fn equations(c: &Checked, l: &Layout, x: &[f64]) -> (DVector<f64>, DMatrix<f64>) {
+    let n = l.n;
+    let nm = l.nm;
+    let p = &x[..l.params];
+    let (m, k) = assemble(c, p);
+    let v = l.shapes(c, x);
+    let mv: Vec<DVector<f64>> = v.iter().map(|vj| &m * vj).collect();
+    let kv: Vec<DVector<f64>> = v.iter().map(|vj| &k * vj).collect();
+    let miv: Vec<Vec<DVector<f64>>> =
+        c.mi.iter()
+            .map(|a| v.iter().map(|vj| a * vj).collect())
+            .collect();
+    let kiv: Vec<Vec<DVector<f64>>> =
+        c.ki.iter()
+            .map(|a| v.iter().map(|vj| a * vj).collect())
+            .collect();
+    let mut r = DVector::zeros(l.rows);
+    let mut jac = DMatrix::zeros(l.rows, l.columns());
+    let mut row = 0;
+    for (j, w2) in c.w2.iter().copied().enumerate() {
+        // Group 1, in units of M v Ω², made dimensionless.
+        let s = l.s[j];
+        for i in 0..n {
+            r[row + i] = (kv[j][i] - w2 * mv[j][i]) * s;
+            for (q, a) in miv.iter().enumerate() {
+                jac[(row + i, q)] = -w2 * a[j][i] * s;
+            }
+            for (q, a) in kiv.iter().enumerate() {
+                jac[(row + i, nm + q)] = a[j][i] * s;
+            }
+            for &(d, col) in &l.unknown[j] {
+                jac[(row + i, col)] = (k[(i, d)] - w2 * m[(i, d)]) * s;
+            }
+        }
+        row += n;
+    }
+    // Rows `g·f(vₐ, v_b)` of a symmetric bilinear form `f(x, y) = xᵀ F y`:
+    // the parameters' columns given, the entries' from `F vₐ` and `F v_b`.
+    let pair =
+        |jac: &mut DMatrix<f64>, row: usize, a: usize, b: usize, g: f64, fv: &[DVector<f64>]| {
+            for &(d, col) in &l.unknown[a] {
+                jac[(row, col)] += g * fv[b][d];
+            }
+            for &(d, col) in &l.unknown[b] {
+                jac[(row, col)] += g * fv[a][d];
+            }
+        };
+    if nm > 0 {
+        let modes = v.len();
+        for a in 0..modes {
+            for b in a..modes {
+                let g = (c.weights[a] * c.weights[b]).sqrt();
+                let delta = if a == b { 1.0 } else { 0.0 };
+                r[row] = (v[a].dot(&mv[b]) - delta) * g;
+                for (q, mi) in miv.iter().enumerate() {
+                    jac[(row, q)] = v[a].dot(&mi[b]) * g;
+                }
+                pair(&mut jac, row, a, b, g, &mv);
+                row += 1;
+                let s = g / (c.w2[a] * c.w2[b]).sqrt();
+                r[row] = (v[a].dot(&kv[b]) - c.w2[b] * delta) * s;
+                for (q, ki) in kiv.iter().enumerate() {
+                    jac[(row, nm + q)] = v[a].dot(&ki[b]) * s;
+                }
+                pair(&mut jac, row, a, b, s, &kv);
+                row += 1;
+            }
+        }
+    }
+    for &j in &l.scale_rows {
+        let g = c.weights[j];
+        r[row] = (v[j].dot(&mv[j]) - 1.0) * g;
+        pair(&mut jac, row, j, j, g, &mv);
+        row += 1;
+    }
+    (r, jac)
+}
+
+fn norm(v: &[f64]) -> f64 {
+    v.iter().map(|a| a * a).sum::<f64>().sqrt()
+}
+
+fn unidentifiable(l: &Layout) -> InputError {
+    let entries = if l.partial() {
+        " and the unmeasured shape entries"
+    } else {
+        ""
+    };
+    InputError::invalid(
+        "unidentifiable",
+        "modes",
+        format!("the measured modes cannot tell the parameters{entries} apart (the equations are dependent at the fitted model); measure more modes, or more entries of their shapes (with every mass known, a shape measured at one degree of freedom gives only its frequency)"),
+    )
+}
+
+/// Gauss–Newton over parameters and unmeasured entries from `x`; the solution,
+/// the solves made and the residual RMS.
+fn iterate(c: &Checked, l: &Layout, mut x: Vec<f64>) -> Result<(Vec<f64>, usize, f64), InputError> {
+    let what = "the model-correction equations";
+    let (mut r, mut jac) = equations(c, l, &x);
+    let mut iterations = 0;
+    loop {
+        if crate::balancing::cancel::requested() {
+            return Err(InputError::unsolvable("cancelled", "the request ended"));
+        }
+        iterations += 1;
+        let (step, _) = lsq::step(&jac, &r, what)?;
+        // Settled when the full step is small, whatever the line search takes.
+        let (change, size) = (norm(&step.as_slice()[..l.params]), norm(&x[..l.params]));
+        let settled = change <= TOLERANCE * (1.0 + size);
+        let before = r.norm_squared();
+        let mut t = 1.0;
+        let mut accepted = None;
+        for _ in 0..HALVINGS {
+            let next: Vec<f64> = x.iter().zip(step.iter()).map(|(a, d)| a + t * d).collect();
+            let (rn, jn) = equations(c, l, &next);
+            if rn.norm_squared() <= before {
+                accepted = Some((next, rn, jn));
+                break;
+            }
+            t *= 0.5;
+        }
+        // No decrease along the step: a minimum, to rounding.
+        let Some((next, rn, jn)) = accepted else {
+            break;
+        };
+        x = next;
+        r = rn;
+        jac = jn;
+        if settled {
             break;
         }
         if iterations >= MAX_ITERATIONS {
@@ -175,6 +326,82 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
             ));
         }
     }
+    let (_, full) = lsq::step(&jac, &r, what)?;
+    if !full {
+        return Err(unidentifiable(l));
+    }
+    Ok((x, iterations, lsq::rms(r.iter().copied())))
+}
+
+/// Correct the model: estimate its parameters from the measured modes.
+pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
+    let c = model::check(req)?;
+    let mut l = Layout::new(&c);
+    let unknowns = l.columns();
+    if l.rows < unknowns {
+        let entries = unknowns - l.params;
+        return Err(InputError::invalid(
+            "too_few_equations",
+            "modes",
+            format!(
+                "{} parameters and {entries} unmeasured shape entries are unknown, but the {} measured modes give only {} equations; measure more modes, or more entries of their shapes",
+                l.params,
+                c.shapes.len(),
+                l.rows
+            ),
+        ));
+    }
+    if l.rows.saturating_mul(unknowns) > MAX_ENTRIES {
+        return Err(InputError::invalid(
+            "too_large",
+            "modes",
+            format!(
+                "{} equations in {unknowns} unknowns (parameters and unmeasured shape entries) exceed the {MAX_ENTRIES} entries a correction may use; give fewer modes or measure more entries",
+                l.rows
+            ),
+        ));
+    }
+    let mut x = c.initial.clone();
+    x.extend(start_entries(&c, &l, &c.initial));
+    // Group 1's weights, fixed at the start so that every step minimises
+    // the same sum: `G / (Ω² · mean mass · |v|)`, |v| over the measured
+    // entries (the whole start where none is measured).
+    let (m_start, _) = assemble(&c, &c.initial);
+    let mass_scale = (m_start.trace() / l.n as f64).abs().max(f64::MIN_POSITIVE);
+    let start = l.shapes(&c, &x);
+    l.s = (0..c.shapes.len())
+        .map(|j| {
+            let measured = c.shapes[j]
+                .iter()
+                .flatten()
+                .map(|e| e * e)
+                .sum::<f64>()
+                .sqrt();
+            let size = if measured > 0.0 {
+                measured
+            } else {
+                start[j].norm()
+            };
+            c.weights[j] / (c.w2[j] * mass_scale * size.max(f64::MIN_POSITIVE))
+        })
+        .collect();
+    let (p, iterations, residual) = if l.partial() {
+        let (x, iterations, residual) = iterate(&c, &l, x)?;
+        (x[..l.params].to_vec(), iterations, residual)
+    } else {
+        // Linear: one solve from zero gives the least-squares parameters.
+        let zero = vec![0.0; l.params];
+        let (r, a) = equations(&c, &l, &zero);
+        let b = -r;
+        let p = lsq::solve(a.clone(), &b, "the model-correction equations").map_err(|e| match e
+            .code
+        {
+            "unidentifiable" => unidentifiable(&l),
+            _ => e,
+        })?;
+        let residual = lsq::rms((&a * &p - &b).iter().copied());
+        (p.iter().copied().collect(), 1, residual)
+    };
     let (m, k) = assemble(&c, &p);
     // A matrix entry of 1e300 passed the solve and overflowed the parameters
     // and the residual, answered as null (fuzzing, session 15); in-range
@@ -191,6 +418,23 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
         &modes::solve(&m, &k)?.w2,
         "mass and stiffness (with the estimated parameters)",
     )?;
+    if l.partial() {
+        for (j, mode) in req.modes.iter().enumerate() {
+            let f = mode.frequency_hz;
+            let nearest = freqs
+                .iter()
+                .copied()
+                .min_by(|a, b| (a - f).abs().total_cmp(&(b - f).abs()))
+                .unwrap_or(f64::NAN);
+            if !((nearest - f).abs() <= FREQUENCY_MATCH * f) {
+                return Err(InputError::invalid(
+                    "not_converged",
+                    format!("modes[{j}].frequency_hz"),
+                    format!("the fit settled on a model whose nearest frequency is {nearest:.4} Hz, not the measured {f} Hz (more than {:.0} % off): a minimum of the equations that fits nothing; give starting parameters nearer the true ones, or measure more entries of the shapes", 100.0 * FREQUENCY_MATCH),
+                ));
+            }
+        }
+    }
     let nm = c.mi.len();
     Ok(ModelCorrection {
         mass_parameters: p[..nm].to_vec(),

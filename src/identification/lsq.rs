@@ -8,7 +8,7 @@ use crate::balancing::InputError;
 
 /// Singular values below this, relative to the largest (after column scaling),
 /// mean that the data cannot tell some parameters apart.
-const RANK_TOLERANCE: f64 = 1e-11;
+pub(crate) const RANK_TOLERANCE: f64 = 1e-11;
 
 /// `argmin ‖A x − b‖` through the SVD of the column-scaled `A`.
 /// `what` names the model in the error when the columns are dependent.
@@ -51,6 +51,36 @@ pub fn solve(
     Ok(DVector::from_iterator(
         x.len(),
         x.iter().zip(&scale).map(|(v, s)| v / s),
+    ))
+}
+
+/// A Gauss–Newton step: the smallest `x` minimising `‖A x + r‖`, through
+/// the SVD of the column-scaled `A` with the singular values under the rank
+/// tolerance dropped (so a step is taken even where the equations are
+/// momentarily dependent), and whether `A` had full column rank.
+pub fn step(
+    a: &DMatrix<f64>,
+    r: &DVector<f64>,
+    what: &str,
+) -> Result<(DVector<f64>, bool), InputError> {
+    if !a.iter().chain(r.iter()).all(|x| x.is_finite()) {
+        return Err(InputError::unsolvable(
+            "not_finite",
+            format!("{what}: the data overflow the model's equations"),
+        ));
+    }
+    let mut a = a.clone();
+    let scale = unit_columns(&mut a);
+    let (rows, cols) = a.shape();
+    let svd = a.svd(true, true);
+    let smax = svd.singular_values.max();
+    let full = rows >= cols && smax > 0.0 && svd.singular_values.min() > RANK_TOLERANCE * smax;
+    let x = svd
+        .solve(&(-r), RANK_TOLERANCE * smax)
+        .map_err(|e| InputError::unsolvable("solver_failed", e.to_string()))?;
+    Ok((
+        DVector::from_iterator(x.len(), x.iter().zip(&scale).map(|(v, s)| v / s)),
+        full,
     ))
 }
 

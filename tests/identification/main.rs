@@ -11,6 +11,7 @@ mod api;
 mod decay;
 mod errors;
 mod model;
+mod partial;
 mod properties;
 mod ranges;
 mod rotor;

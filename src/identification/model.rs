@@ -221,6 +221,20 @@ pub fn check(req: &ModelRequest) -> Result<Checked, InputError> {
             "at least one measured mode is needed",
         ));
     }
+    // An n-DOF model has n modes. Unbounded (until session 19), 200,000
+    // modes of a 1-mass model (within the body limit) with its mass
+    // estimated would ask for a matrix of 4e10 rows, 640 GB, and a failed
+    // allocation aborts the whole service.
+    if req.modes.len() > n {
+        return Err(InputError::invalid(
+            "too_many_modes",
+            "modes",
+            format!(
+                "{} modes for a model of {n} degrees of freedom, which has {n}; give each measured mode once",
+                req.modes.len()
+            ),
+        ));
+    }
     let mut w2 = Vec::new();
     let mut shapes = Vec::new();
     let mut weights = Vec::new();

@@ -14,6 +14,10 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
     // An outside review (session 17): a ramp gave 200 with 5.8e-9 Hz and a
     // negative decrement; dt_s 1e300 gave 0 Hz and 1e-300 a not_finite with no
     // field; masses of 1e300 and 1e-300 gave 0 Hz and stiffnesses of 1e286.
+    // More modes than degrees of freedom were answered until session 19:
+    // 200,000 modes of a 1-mass model (within the body limit) with its mass
+    // estimated would ask for a matrix of 4e10 rows, 640 GB, and a failed
+    // allocation aborts the whole service.
     // The cases after "a huge mass parameter" were answered 200 with a
     // meaningless result (tidy18's sweep, identification::ranges' module
     // doc), or (the first two) with null (fuzzing, session 15), then as
@@ -180,6 +184,16 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
             rotor_with(|v| v["options"]["mass_kg"] = json!(1e-300)),
             "options.mass_kg",
             "from 1e-9 to 1e9",
+        ),
+        (
+            "three modes of a 2-mass model",
+            "model",
+            model(|v| {
+                let third = json!({"frequency_hz": 20.0, "shape": [0.1, 0.2]});
+                v["modes"].as_array_mut().unwrap().push(third)
+            }),
+            "modes",
+            "give each measured mode once",
         ),
         (
             "kappa 1e10",

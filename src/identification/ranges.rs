@@ -19,6 +19,7 @@
 //! fields that produced them.
 
 use crate::balancing::error::{shown, within};
+use crate::balancing::validate::{MAX_SPEED_RPM, MIN_SERVICE_SPEED_RPM};
 use crate::balancing::InputError;
 
 /// Magnitude of a mass entry other than 0 on the diagonal (`identify/model`'s
@@ -28,6 +29,14 @@ use crate::balancing::InputError;
 /// too. (N) Masses of 1e300 and 1e-300 gave 0 Hz and stiffnesses of 1e286
 /// (review, session 17); a rotor mass of 1e300 overflowed `√(cm)`.
 pub const MASS: (f64, f64) = (1e-9, 1e9);
+
+/// A rotor's `options.speed_range_rpm` `[lo, hi]`: two finite numbers,
+/// `lo < hi`, each within these bounds, else refused naming
+/// `options.speed_range_rpm`. (P) The bounds of speeds elsewhere: 1 rpm, the
+/// slowest service speed a session and the residual-unbalance check accept,
+/// to 1e6 rpm, the fastest reading. Before session 19 only `0 < lo < hi` was
+/// checked: `[1000, 1e300]` was taken for a range.
+pub const SPEED_RPM: (f64, f64) = (MIN_SERVICE_SPEED_RPM, MAX_SPEED_RPM);
 
 /// Natural frequencies, Hz, measured (`modes[j].frequency_hz`) or answered.
 /// (P) 0.01 Hz is a period of 100 s, slower than the pendulum mode of any

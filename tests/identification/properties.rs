@@ -1,5 +1,5 @@
 //! Property tests over the identification endpoints' accepted ranges
-//! (`identification::ranges`): every accepted request answers finite
+//! (`identification::ranges`, a rotor's `speed_range_rpm` among them): every accepted request answers finite
 //! numbers and frequencies within the accepted range, and no refusal of an
 //! in-range request is an overflow (`not_finite`), a solver failure or a
 //! range error. Before the ranges (tidy18) the model property failed (a
@@ -12,7 +12,7 @@ use fieldbal::balancing::model::Unit;
 use fieldbal::identification::correct::correct;
 use fieldbal::identification::decay::{self, DampingLaw, FreeDecayRequest, DT_S};
 use fieldbal::identification::model::{Initial, MatrixFamily, Mode, ModelRequest};
-use fieldbal::identification::ranges::FREQUENCY_HZ;
+use fieldbal::identification::ranges::{FREQUENCY_HZ, SPEED_RPM};
 use fieldbal::identification::rotor::{self, RotorOptions, RotorRequest};
 use proptest::prelude::*;
 use proptest::test_runner::FileFailurePersistence;
@@ -167,11 +167,17 @@ proptest! {
         mass_kg in prop::option::of(positive(-9.0, 9.0)),
         kappa in prop::option::of(-10.0f64..10.0),
         rpm in 600.0f64..20_000.0,
+        range in prop::option::of((0.0f64..6.0, 0.0f64..6.0)),
     ) {
         let rotor = Jeffcott::with(100.0, rpm, 0.05);
+        // Any [lo, hi] within SPEED_RPM, lo < hi (log-uniform).
+        let speed_range_rpm = range
+            .map(|(a, b)| (10f64.powf(a.min(b)), 10f64.powf(a.max(b))))
+            .filter(|(lo, hi)| lo < hi && SPEED_RPM.0 <= *lo && *hi <= SPEED_RPM.1)
+            .map(|(lo, hi)| vec![lo, hi]);
         let req = RotorRequest {
             session: session(&[rotor], &speeds(0.5 * rpm, 1.5 * rpm, 7), Unit::UmPp, 0.01, 7),
-            options: RotorOptions { mass_kg, cross_coupling_ratio: kappa, ..RotorOptions::default() },
+            options: RotorOptions { mass_kg, cross_coupling_ratio: kappa, speed_range_rpm, ..RotorOptions::default() },
         };
         match rotor::identify(&req) {
             Ok(out) => {

@@ -17,7 +17,8 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
     // More modes than degrees of freedom were answered until session 19:
     // 200,000 modes of a 1-mass model (within the body limit) with its mass
     // estimated would ask for a matrix of 4e10 rows, 640 GB, and a failed
-    // allocation aborts the whole service.
+    // allocation aborts the whole service. So was a speed range up to 1e300
+    // rpm or from 0.5 rpm.
     // The cases after "a huge mass parameter" were answered 200 with a
     // meaningless result (tidy18's sweep, identification::ranges' module
     // doc), or (the first two) with null (fuzzing, session 15), then as
@@ -184,6 +185,20 @@ async fn nonsense_that_was_answered_200_is_refused_naming_the_field() {
             rotor_with(|v| v["options"]["mass_kg"] = json!(1e-300)),
             "options.mass_kg",
             "from 1e-9 to 1e9",
+        ),
+        (
+            "speed range to 1e300 rpm",
+            "rotor",
+            rotor_with(|v| v["options"]["speed_range_rpm"] = json!([1000, 1e300])),
+            "options.speed_range_rpm",
+            "from 1 to 1000000,",
+        ),
+        (
+            "speed range from 0.5 rpm",
+            "rotor",
+            rotor_with(|v| v["options"]["speed_range_rpm"] = json!([0.5, 3000])),
+            "options.speed_range_rpm",
+            "from 1 to 1000000,",
         ),
         (
             "three modes of a 2-mass model",

@@ -76,20 +76,39 @@ fn indices(
     Ok(out)
 }
 
+/// `options.speed_range_rpm`: `[lo, hi]`, `lo < hi`, both within
+/// [`ranges::SPEED_RPM`], else an error naming the option.
+fn speed_range(r: &[f64]) -> Result<(f64, f64), InputError> {
+    let field = "options.speed_range_rpm";
+    let [lo, hi] = r else {
+        return Err(InputError::invalid(
+            "invalid_value",
+            field,
+            format!("give [lo, hi] in rpm, two numbers; got {}", r.len()),
+        ));
+    };
+    for (name, x) in [("lo", *lo), ("hi", *hi)] {
+        within(
+            || field.into(),
+            x,
+            ranges::SPEED_RPM,
+            &format!("{name} of [lo, hi] (rpm)"),
+        )?;
+    }
+    if lo >= hi {
+        return Err(InputError::invalid(
+            "invalid_value",
+            field,
+            format!("give [lo, hi] in rpm with lo < hi; got lo {lo}, hi {hi}"),
+        ));
+    }
+    Ok((*lo, *hi))
+}
+
 fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputError> {
     let range = match &o.speed_range_rpm {
         None => None,
-        Some(r) => {
-            let ok = r.len() == 2 && r.iter().all(|x| x.is_finite() && *x > 0.0) && r[0] < r[1];
-            if !ok {
-                return Err(InputError::invalid(
-                    "invalid_value",
-                    "options.speed_range_rpm",
-                    "give [lo, hi] in rpm with 0 < lo < hi",
-                ));
-            }
-            Some((r[0], r[1]))
-        }
+        Some(r) => Some(speed_range(r)?),
     };
     if let Some(m) = o.mass_kg {
         within(

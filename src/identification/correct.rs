@@ -265,20 +265,28 @@ fn equations(c: &Checked, l: &Layout, x: &[f64]) -> (DVector<f64>, DMatrix<f64>)
     (r, jac)
 }
 
+/// The request ended (time limit, client gone): nobody waits for the answer.
+fn cancelled() -> InputError {
+    InputError::unsolvable("cancelled", "the request ended before the fit")
+}
+
 fn norm(v: &[f64]) -> f64 {
     v.iter().map(|a| a * a).sum::<f64>().sqrt()
 }
 
 fn unidentifiable(l: &Layout) -> InputError {
-    let entries = if l.partial() {
-        " and the unmeasured shape entries"
+    let (entries, start) = if l.partial() {
+        (
+            " and the unmeasured shape entries",
+            ", or start nearer the true parameters",
+        )
     } else {
-        ""
+        ("", "")
     };
     InputError::invalid(
         "unidentifiable",
         "modes",
-        format!("the measured modes cannot tell the parameters{entries} apart (the equations are dependent at the fitted model); measure more modes, or more entries of their shapes (with every mass known, a shape measured at one degree of freedom gives only its frequency)"),
+        format!("the measured modes cannot tell the parameters{entries} apart (the equations are dependent at the fitted model); measure more modes, or more entries of their shapes (with every mass known, a shape measured at one degree of freedom gives only its frequency){start}"),
     )
 }
 
@@ -290,7 +298,7 @@ fn iterate(c: &Checked, l: &Layout, mut x: Vec<f64>) -> Result<(Vec<f64>, usize,
     let mut iterations = 0;
     loop {
         if crate::balancing::cancel::requested() {
-            return Err(InputError::unsolvable("cancelled", "the request ended"));
+            return Err(cancelled());
         }
         iterations += 1;
         let (step, _) = lsq::step(&jac, &r, what)?;
@@ -301,6 +309,9 @@ fn iterate(c: &Checked, l: &Layout, mut x: Vec<f64>) -> Result<(Vec<f64>, usize,
         let mut t = 1.0;
         let mut accepted = None;
         for _ in 0..HALVINGS {
+            if crate::balancing::cancel::requested() {
+                return Err(cancelled());
+            }
             let next: Vec<f64> = x.iter().zip(step.iter()).map(|(a, d)| a + t * d).collect();
             let (rn, jn) = equations(c, l, &next);
             if rn.norm_squared() <= before {
@@ -331,6 +342,31 @@ fn iterate(c: &Checked, l: &Layout, mut x: Vec<f64>) -> Result<(Vec<f64>, usize,
         return Err(unidentifiable(l));
     }
     Ok((x, iterations, lsq::rms(r.iter().copied())))
+}
+
+/// The mean mass group 1 is divided by: of `M` at the start `p`, or, where
+/// that is below the lightest accepted mass, of `M0` and the patterns `Mᵢ`
+/// together (1 if they are all zero on the diagonal). A start of zero
+/// masses divided by the smallest positive number: weights near 1e305,
+/// column norms that overflowed, and a well-posed request refused as
+/// `unidentifiable` (session 19).
+fn mass_scale(c: &Checked, p: &[f64]) -> f64 {
+    let n = c.m0.nrows() as f64;
+    let (m, _) = assemble(c, p);
+    let at_start = (m.trace() / n).abs();
+    if at_start >= ranges::MASS.0 {
+        return at_start;
+    }
+    let patterns = std::iter::once(&c.m0)
+        .chain(&c.mi)
+        .map(|a| a.diagonal().abs().sum())
+        .sum::<f64>()
+        / n;
+    if patterns > 0.0 {
+        patterns
+    } else {
+        1.0
+    }
 }
 
 /// Correct the model: estimate its parameters from the measured modes.
@@ -366,8 +402,7 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
     // Group 1's weights, fixed at the start so that every step minimises
     // the same sum: `G / (Ω² · mean mass · |v|)`, |v| over the measured
     // entries (the whole start where none is measured).
-    let (m_start, _) = assemble(&c, &c.initial);
-    let mass_scale = (m_start.trace() / l.n as f64).abs().max(f64::MIN_POSITIVE);
+    let mass_scale = mass_scale(&c, &c.initial);
     let start = l.shapes(&c, &x);
     l.s = (0..c.shapes.len())
         .map(|j| {

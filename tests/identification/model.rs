@@ -207,3 +207,25 @@ fn masses_and_stiffnesses_with_partial_normalised_shapes_settle_on_the_true_mode
         "{got:?}"
     );
 }
+
+#[test]
+fn a_start_of_zero_masses_still_gives_the_true_model() {
+    // The equations were divided by the start's mean mass, here 0, floored at
+    // the smallest positive number: weights near 1e305, column norms that
+    // overflowed, and this well-posed request refused as unidentifiable.
+    let req = ModelRequest {
+        mass: masses_unknown(),
+        stiffness: stiffness_unknown(),
+        modes: measured(false, &[0, 1, 2]),
+        initial: Some(Initial {
+            mass_parameters: Some(vec![0.0; 3]),
+            stiffness_parameters: None,
+        }),
+    };
+    let got = correct(&req).unwrap();
+    assert!(
+        rel(&got.mass_parameters, &MASSES) < 1e-9
+            && rel(&got.stiffness_parameters, &SPRINGS) < 1e-9,
+        "{got:?}"
+    );
+}

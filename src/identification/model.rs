@@ -49,7 +49,8 @@ pub struct Mode {
     pub weight: Option<f64>,
 }
 
-/// Starting parameters (default 1 each): used to fill unmeasured shape entries.
+/// Starting parameters (default 1 each): where the fit of partly measured
+/// shapes starts, and the unmeasured entries with it.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, ToSchema)]
 #[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]

@@ -1,7 +1,7 @@
 //! Property tests over the identification endpoints' accepted ranges
-//! (`identification::ranges`, a rotor's `speed_range_rpm` among them): every accepted request answers finite
-//! numbers and frequencies within the accepted range, and no refusal of an
-//! in-range request is an overflow (`not_finite`), a solver failure or a
+//! (`identification::ranges`, a rotor's `speed_range_rpm` among them):
+//! every accepted request answers finite numbers and frequencies within the
+//! accepted range, and no refusal of an in-range request is an overflow (`not_finite`), a solver failure or a
 //! range error. Before the ranges (tidy18) the model property failed (a
 //! 2-mass chain answered 0 Hz) and the free-decay one (8 junk samples
 //! answered 4.7e5 Hz); their seeds are kept beside this file.

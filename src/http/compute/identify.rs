@@ -28,7 +28,7 @@ async fn blocking<T: Send + 'static>(
     responses(
         (status = 200, description = "Per sensor and plane: critical speed, damping ratio, API 684 amplification factor and separation margin", body = RotorIdentification),
         MalformedJson,
-        (status = 422, description = "Invalid session or options, too few speeds", body = ErrorBody),
+        (status = 422, description = "Invalid session or options (a `speed_range_rpm` not `[lo, hi]` with lo < hi, each 1 to 1e6 rpm), too few speeds", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn rotor(
@@ -58,7 +58,7 @@ pub async fn free_decay(
     responses(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),
         MalformedJson,
-        (status = 422, description = "Non-square or asymmetric matrix, a mass or stiffness entry, measured frequency, shape entry, weight or starting parameter out of its range (docs/session-format.md, Identification), a shape of the wrong length, too few modes, or a corrected model whose frequencies leave 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
+        (status = 422, description = "Non-square or asymmetric matrix, a mass or stiffness entry, measured frequency, shape entry, weight or starting parameter out of its range (docs/session-format.md, Identification), a shape of the wrong length, too few modes or more than degrees of freedom, modes that cannot settle the parameters and unmeasured shape entries (`too_few_equations`, `unidentifiable`, naming `modes`; a partly measured fit missing a measured frequency, `not_converged`), or a corrected model whose frequencies leave 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn model(

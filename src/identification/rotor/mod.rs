@@ -13,7 +13,8 @@
 //! A known `options.mass_kg` outside 1e-9 to 1e9 kg and a
 //! `cross_coupling_ratio` beyond ±10 are refused naming the option
 //! ([`super::ranges`] says why): a mass of 1e300 kg overflowed `√(cm)` and
-//! answered `no_mode` for a clean resonance.
+//! answered `no_mode` for a clean resonance. A `speed_range_rpm` must be
+//! `[lo, hi]`, `lo < hi`, each within [`super::ranges::SPEED_RPM`].
 
 use nalgebra::DMatrix;
 use num_complex::Complex64;

@@ -236,20 +236,20 @@ fn equations(c: &Checked, l: &Layout, x: &[f64]) -> (DVector<f64>, DMatrix<f64>)
         };
     if nm > 0 {
         let modes = v.len();
-        for a in 0..modes {
+        for (a, va) in v.iter().enumerate() {
             for b in a..modes {
                 let g = (c.weights[a] * c.weights[b]).sqrt();
                 let delta = if a == b { 1.0 } else { 0.0 };
-                r[row] = (v[a].dot(&mv[b]) - delta) * g;
+                r[row] = (va.dot(&mv[b]) - delta) * g;
                 for (q, mi) in miv.iter().enumerate() {
-                    jac[(row, q)] = v[a].dot(&mi[b]) * g;
+                    jac[(row, q)] = va.dot(&mi[b]) * g;
                 }
                 pair(&mut jac, row, a, b, g, &mv);
                 row += 1;
                 let s = g / (c.w2[a] * c.w2[b]).sqrt();
-                r[row] = (v[a].dot(&kv[b]) - c.w2[b] * delta) * s;
+                r[row] = (va.dot(&kv[b]) - c.w2[b] * delta) * s;
                 for (q, ki) in kiv.iter().enumerate() {
-                    jac[(row, nm + q)] = v[a].dot(&ki[b]) * s;
+                    jac[(row, nm + q)] = va.dot(&ki[b]) * s;
                 }
                 pair(&mut jac, row, a, b, s, &kv);
                 row += 1;
@@ -461,7 +461,8 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
                 .copied()
                 .min_by(|a, b| (a - f).abs().total_cmp(&(b - f).abs()))
                 .unwrap_or(f64::NAN);
-            if !((nearest - f).abs() <= FREQUENCY_MATCH * f) {
+            let off = (nearest - f).abs();
+            if off.is_nan() || off > FREQUENCY_MATCH * f {
                 return Err(InputError::invalid(
                     "not_converged",
                     format!("modes[{j}].frequency_hz"),

@@ -238,3 +238,50 @@ async fn partly_measured_problems_the_data_cannot_settle_are_refused_naming_mode
     }
     server.shutdown().await;
 }
+
+#[test]
+fn a_partly_measured_problem_too_large_for_one_matrix_is_refused_before_any_work() {
+    // Unmeasured entries are unknowns: 200 modes of a 200-mass model, one
+    // entry each unmeasured, and 10 springs make 40,000 equations in 210
+    // unknowns, past MAX_ENTRIES (64 MB before the SVD's copies).
+    let n = 200;
+    let unit = |i: usize| -> Vec<Vec<f64>> {
+        (0..n)
+            .map(|r| {
+                (0..n)
+                    .map(|c| if r == i && c == i { 1.0 } else { 0.0 })
+                    .collect()
+            })
+            .collect()
+    };
+    let identity: Vec<Vec<f64>> = (0..n)
+        .map(|r| (0..n).map(|c| if r == c { 1.0 } else { 0.0 }).collect())
+        .collect();
+    let req = ModelRequest {
+        mass: MatrixFamily {
+            fixed: identity,
+            parameters: vec![],
+        },
+        stiffness: MatrixFamily {
+            fixed: vec![vec![0.0; n]; n],
+            parameters: (0..10).map(unit).collect(),
+        },
+        modes: (0..n)
+            .map(|j| Mode {
+                frequency_hz: 1.0 + j as f64,
+                shape: Some((0..n).map(|i| (i != j).then_some(1.0)).collect()),
+                weight: None,
+            })
+            .collect(),
+        initial: None,
+    };
+    let rows = n * n;
+    let columns = 10 + n;
+    assert!(rows * columns > fieldbal::identification::correct::MAX_ENTRIES);
+    let err = correct(&req).unwrap_err();
+    assert_eq!(
+        (err.code, err.field.as_deref()),
+        ("too_large", Some("modes")),
+        "{err:?}"
+    );
+}

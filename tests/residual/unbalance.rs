@@ -261,3 +261,30 @@ fn the_reading_off_the_spacing_most_readings_share_is_named_even_when_it_is_the_
         }
     }
 }
+
+#[test]
+fn the_angle_interval_starts_in_0_to_360_and_runs_past_360_when_it_wraps_as_a_solutions_does() {
+    // A heavy spot near 0°: the interval crosses 0°. Like a correction's
+    // `uncertainty.angle_deg`, it starts in [0, 360) and its upper end may
+    // exceed 360; it never starts below 0 (it gave [-1.7, 1.7]) nor at or
+    // above 360 (a heavy spot at 359.9° gave [358.3, 361.6] in one direction
+    // and the other way round in the other).
+    for conv in Conventions::ALL {
+        for angle in [0.0, 0.5, 359.5, 180.0] {
+            for phases in [true, false] {
+                let rotor = Rotor::new(150.0, angle, conv);
+                let got = check(&request(&rotor, 1.5 * allowable(), 12, phases, None)).unwrap();
+                let [lo, hi] = got.uncertainty.expect("an uncertainty").residual_angle_deg;
+                let what = format!("{conv:?} {angle}° phases={phases}: [{lo}, {hi}]");
+                assert!((0.0..360.0).contains(&lo), "{what}");
+                assert!(hi > lo && hi - lo < 360.0, "{what}");
+                // The interval holds the reported angle (or it plus 360).
+                let a = got.residual_angle_deg;
+                assert!(
+                    (lo..=hi).contains(&a) || (lo..=hi).contains(&(a + 360.0)),
+                    "{what}: angle {a}"
+                );
+            }
+        }
+    }
+}

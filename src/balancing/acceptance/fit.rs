@@ -16,7 +16,7 @@ use super::{
     allowable_gmm, FitCheck, Method, ResidualCheck, ResidualRequest, ResidualUncertainty, Worksheet,
 };
 use crate::balancing::error::InputError;
-use crate::balancing::phasor::{reading_in, weight_out};
+use crate::balancing::phasor::{reading_in, weight_out, wrap_deg};
 use crate::balancing::solution::Warning;
 use crate::balancing::uncertainty::CHI2_2_95;
 
@@ -206,10 +206,14 @@ fn uncertainty(input: &Input, u: Complex64) -> Option<ResidualUncertainty> {
         .try_inverse()
         .is_none_or(|inv| (z.transpose() * inv * z)[0] <= CHI2_2_95);
     let (_, angle) = weight_out(input.conv, u);
-    let angle_deg = if holds_zero || !sd_angle.is_finite() {
+    // As a correction's interval: it starts in [0, 360) and its upper end
+    // runs past 360 when it wraps (a heavy spot near 0° gave [-1.7, 1.7]).
+    let half = 1.96 * sd_angle;
+    let angle_deg = if holds_zero || !half.is_finite() || half >= 180.0 {
         [0.0, 360.0]
     } else {
-        [angle - 1.96 * sd_angle, angle + 1.96 * sd_angle]
+        let lower = wrap_deg(angle - half);
+        [lower, lower + 2.0 * half]
     };
     sd.is_finite().then(|| ResidualUncertainty {
         method: "first_order".to_string(),

@@ -106,7 +106,8 @@ pub struct ResidualUncertainty {
     pub residual_unbalance_sd_gmm: f64,
     /// 95 % interval of the residual unbalance, g·mm.
     pub residual_unbalance_gmm: [f64; 2],
-    /// 95 % interval of the angle; `[0, 360]` when undetermined.
+    /// 95 % interval of the angle, degrees (it starts in [0, 360); the upper end
+    /// may exceed 360 when it wraps); `[0, 360]` when undetermined.
     pub residual_angle_deg: [f64; 2],
 }
 

@@ -142,6 +142,29 @@ fn a_trial_too_small_by_both_tests_gets_one_warning_that_says_both() {
 }
 
 #[test]
+fn a_zero_covariance_is_written_without_minus_signs_in_either_angle_direction() {
+    // Against rotation the off-diagonal is negated for the wire: a zero one
+    // came out as `-0.0`, which the contract's numbers never are.
+    let rotor = Rotor::two_plane(1.0);
+    for conv in [LAG_AGAINST, LEAD_WITH] {
+        let sol = solve(
+            &session(conv, &rotor.trial, &rotor.readings(), None),
+            &options(0.0, 0.0),
+        );
+        for corr in &sol.corrections {
+            let u = corr.uncertainty.as_ref().unwrap();
+            for x in u.covariance_g2.iter().flatten() {
+                assert!(x.is_sign_positive(), "{conv:?} {}: {u:?}", corr.plane);
+            }
+        }
+        let json = serde_json::to_string(&sol).unwrap();
+        for end in [",", "]", "}"] {
+            assert!(!json.contains(&format!("-0.0{end}")), "{conv:?}: {json}");
+        }
+    }
+}
+
+#[test]
 fn without_noise_the_regions_shrink_to_the_correction() {
     let rotor = Rotor::two_plane(1.0);
     let sol = solve(

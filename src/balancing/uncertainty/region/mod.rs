@@ -91,7 +91,8 @@ pub fn correction_uncertainty(c: Complex64, cov: &Matrix2<f64>, conv: Convention
     };
     let off = match conv.angle_direction {
         AngleDirection::WithRotation => cov[(0, 1)],
-        AngleDirection::AgainstRotation => -cov[(0, 1)],
+        // `+ 0.0`: a zero off-diagonal stays 0, not `-0.0` on the wire.
+        AngleDirection::AgainstRotation => -cov[(0, 1)] + 0.0,
     };
     Uncertainty {
         mass_g: Some(mass_g),

@@ -232,7 +232,17 @@ fn supplied_coefficients_that_miss_a_sensor_or_name_an_unknown_one_are_rejected(
     bad_cov[2]["covariance"] = json!([[1.0, 0.0], [0.0, -1.0]]);
     let mut nan = full.clone();
     nan[1]["amplitude_per_g"] = json!(-1.0);
+    // Below what any readings could give (1e-9 of a unit over 1e7 g): 1e-300
+    // unit/g made a correction of 1e302 g whose covariance overflowed and
+    // was answered as `null`.
+    let mut tiny = full.clone();
+    tiny[2]["amplitude_per_g"] = json!(1e-300);
     let cases = [
+        (
+            tiny,
+            "invalid_value",
+            "options.influence_coefficients[2].amplitude_per_g",
+        ),
         (
             missing,
             "missing_coefficient",

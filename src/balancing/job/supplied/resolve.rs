@@ -16,6 +16,12 @@ const FIELD: &str = "options.influence_coefficients";
 /// fit's products overflow (1e300 unit/g made the SVD's singular values NaN
 /// and the solver panic).
 const MAX_AMPLITUDE_PER_G: f64 = 1e15;
+/// The smallest non-zero coefficient a session's readings could give: the
+/// smallest non-zero amplitude (1e-9) over the heaviest trial mass (1e7 g).
+/// Below it the correction's covariance overflows (1e-300 unit/g gave a
+/// 1e302 g correction whose covariance was answered as `null`). 0 stays
+/// valid: the sensor does not see the plane.
+const MIN_AMPLITUDE_PER_G: f64 = 1e-16;
 /// The square of [`MAX_AMPLITUDE_PER_G`], for the covariance's entries.
 const MAX_COVARIANCE: f64 = 1e30;
 
@@ -47,12 +53,12 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
             "a speed must be a finite number greater than 0",
         ));
     }
-    if !(c.amplitude_per_g.is_finite() && (0.0..=MAX_AMPLITUDE_PER_G).contains(&c.amplitude_per_g))
-    {
+    let a = c.amplitude_per_g;
+    if !(a == 0.0 || (MIN_AMPLITUDE_PER_G..=MAX_AMPLITUDE_PER_G).contains(&a)) {
         return Err(bad(
             f("amplitude_per_g"),
             format!(
-                "must be a finite number from 0 to {MAX_AMPLITUDE_PER_G} (sensor unit per gram)"
+                "must be 0 (the sensor does not see the plane) or a finite number from {MIN_AMPLITUDE_PER_G:e} to {MAX_AMPLITUDE_PER_G:e} (sensor unit per gram)"
             ),
         ));
     }

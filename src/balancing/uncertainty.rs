@@ -48,6 +48,7 @@ mod region;
 mod remaining;
 mod trust;
 
+pub(crate) use apply::undetermined_warning;
 pub use apply::{fill, noise_options, reading_covariances, Noise, SNR_THRESHOLD};
 pub use bias::{debiased, Unbiased};
 pub use propagate::{propagate, Known, Problem, Propagation};

@@ -284,3 +284,39 @@ fn supplied_coefficients_that_miss_a_sensor_or_name_an_unknown_one_are_rejected(
         );
     }
 }
+
+#[test]
+fn a_plane_that_supplied_coefficients_say_moves_no_reading_is_undetermined() {
+    // Every coefficient of plane B zero: any mass in B leaves every reading as
+    // it is, as a trial that changed nothing does with estimated coefficients.
+    // The correction in B cannot be known (no mass interval, the warning
+    // `plane_undetermined`), not "0 g within [0, 0]"; A's stays determined.
+    let rotor = Rotor::new();
+    for conv in Conventions::ALL {
+        let s = parsed(&session(
+            conv,
+            runs(&rotor, conv, false, &mut Noise::none()),
+        ));
+        let mut coefficients = exact_coefficients(&rotor, conv, Some(0.01));
+        for c in coefficients.as_array_mut().unwrap() {
+            if c["plane"] == "B" {
+                c["amplitude_per_g"] = json!(0.0);
+            }
+        }
+        let options =
+            serde_json::from_value(json!({"influence_coefficients": coefficients})).unwrap();
+        let sol = fieldbal::balancing::solve(&s, &options).unwrap();
+        let b = sol.corrections.iter().find(|c| c.plane == "B").unwrap();
+        let u = b.uncertainty.as_ref().unwrap();
+        assert_eq!((u.mass_g, u.angle_deg), (None, [0.0, 360.0]), "{conv:?}");
+        let undetermined: Vec<_> = sol
+            .warnings
+            .iter()
+            .filter(|w| w.code == "plane_undetermined")
+            .map(|w| w.plane.as_deref())
+            .collect();
+        assert_eq!(undetermined, [Some("B")], "{conv:?}: {:?}", sol.warnings);
+        let a = sol.corrections.iter().find(|c| c.plane == "A").unwrap();
+        assert!(a.uncertainty.as_ref().unwrap().mass_g.is_some(), "{conv:?}");
+    }
+}

@@ -13,7 +13,7 @@ use crate::balancing::diagnostics::undetermined;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, SolveOptions};
 use crate::balancing::phasor::{modulus, reading_in, weight_out};
-use crate::balancing::solution::{BiasCorrected, Solution, Warning};
+use crate::balancing::solution::{BiasCorrected, Correction, Solution, Warning};
 use crate::balancing::solve::Fit;
 use crate::balancing::validate::Checked;
 
@@ -186,14 +186,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             // combination: no interval can be given (issue 12).
             u.mass_g = None;
             u.angle_deg = [0.0, 360.0];
-            solution.warnings.push(Warning {
-                code: "plane_undetermined".into(),
-                message: format!(
-                    "the readings cannot determine the correction in plane {0}: its trial weight changed no reading, or the sensors see it exactly as a combination of other planes, so only that combination is known and the {1:.3} g shown is one of many equally good answers. Repeat the trial run in {0} with a heavier weight or at a larger radius, add a sensor or speed that sees {0} differently, or solve without it (options.planes)",
-                    corr.plane, corr.mass_g
-                ),
-                plane: Some(corr.plane.clone()),
-            });
+            solution.warnings.push(undetermined_warning(corr));
         }
         corr.uncertainty = Some(u);
     }
@@ -258,5 +251,17 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
             ),
             plane: None,
         });
+    }
+}
+
+/// The warning `plane_undetermined` for `corr`, whose uncertainty is then open.
+pub(crate) fn undetermined_warning(corr: &Correction) -> Warning {
+    Warning {
+        code: "plane_undetermined".into(),
+        message: format!(
+            "the readings cannot determine the correction in plane {0}: its trial weight changed no reading, or the sensors see it exactly as a combination of other planes, so only that combination is known and the {1:.3} g shown is one of many equally good answers. Repeat the trial run in {0} with a heavier weight or at a larger radius, add a sensor or speed that sees {0} differently, or solve without it (options.planes)",
+            corr.plane, corr.mass_g
+        ),
+        plane: Some(corr.plane.clone()),
     }
 }

@@ -21,7 +21,10 @@ use crate::balancing::model::SolveOptions;
 use crate::balancing::phasor::reading_in;
 use crate::balancing::solution::{Solution, Warning};
 use crate::balancing::solve::Fit;
-use crate::balancing::uncertainty::{amplitude_95, correction_uncertainty, reading_noise, Noise};
+use crate::balancing::diagnostics::undetermined;
+use crate::balancing::uncertainty::{
+    amplitude_95, correction_uncertainty, reading_noise, undetermined_warning, Noise,
+};
 
 /// Real 2×2 matrix of `δ ↦ α δ + β δ̄` on (Re δ, Im δ).
 fn real_map(alpha: Complex64, beta: Complex64) -> Matrix2<f64> {
@@ -132,14 +135,24 @@ pub fn fill(
     // The solve's factorisation of the weighted problem, for both contributions.
     let p = parts(fit);
     let full = reading_part(fit, &p, &y0_cov) + coefficient_part(fit, &p, s);
-    for (jj, (corr, &c)) in solution
+    // A plane the coefficients say moves no reading (or only as other planes
+    // do) has no determined correction: as with estimated coefficients.
+    let lost = undetermined(&fit.factor);
+    for (jj, ((corr, &c), &lost)) in solution
         .corrections
         .iter_mut()
         .zip(fit.c.iter())
+        .zip(&lost)
         .enumerate()
     {
         let b = full.fixed_view::<2, 2>(2 * jj, 2 * jj).into_owned();
-        corr.uncertainty = Some(correction_uncertainty(c, &b, conv));
+        let mut u = correction_uncertainty(c, &b, conv);
+        if lost {
+            u.mass_g = None;
+            u.angle_deg = [0.0, 360.0];
+            solution.warnings.push(undetermined_warning(corr));
+        }
+        corr.uncertainty = Some(u);
     }
     for (a, res) in solution.predicted_residual.iter_mut().enumerate() {
         let mut cov = y0_cov[a];

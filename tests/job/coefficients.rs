@@ -320,3 +320,37 @@ fn a_plane_that_supplied_coefficients_say_moves_no_reading_is_undetermined() {
         assert!(a.uncertainty.as_ref().unwrap().mass_g.is_some(), "{conv:?}");
     }
 }
+
+#[test]
+fn pooled_coefficients_below_what_readings_resolve_are_zero_and_solve_again() {
+    // Sensor 2H barely moved (a rounding's worth) under a heavy trial weight:
+    // its pooled coefficient is far below 1e-16 unit/g, which the option
+    // `influence_coefficients` refuses. Pooled (stored, then used through
+    // `coefficients_from`, or printed by `fieldbal coefficients`) it is 0, the
+    // sensor does not see the plane, so that the coefficients solve again.
+    let reading = |sensor: &str, amplitude: f64, phase: f64| {
+        json!({"speed_rpm": 1480, "sensor": sensor, "amplitude": amplitude, "phase_deg": phase})
+    };
+    let s = parsed(&json!({
+        "name": "hair", "machine": "M",
+        "planes": [{"id": "A"}],
+        "sensors": [{"id": "1H", "unit": "um_pp"}, {"id": "2H", "unit": "um_pp"}],
+        "runs": [
+            {"id": "zero", "weights": [],
+             "readings": [reading("1H", 88.0, 47.0), reading("2H", 50.0, 10.0)]},
+            {"id": "trial", "weights": [{"plane": "A", "mass_g": 1e5, "angle_deg": 0}],
+             "readings": [reading("1H", 60.0, 120.0), reading("2H", 50.000000000000014, 10.0)]}
+        ]
+    }));
+    let pooled = pool(&[("s1".to_string(), s.clone())], &PoolOptions::default()).expect("pools");
+    let seen: Vec<f64> = pooled
+        .influence_coefficients
+        .iter()
+        .map(|c| c.amplitude_per_g)
+        .collect();
+    assert!(seen.iter().all(|&a| a == 0.0 || a >= 1e-16), "{seen:?}");
+    assert!(seen.contains(&0.0), "{seen:?}");
+    let coefficients = serde_json::to_value(&pooled.influence_coefficients).unwrap();
+    let options = serde_json::from_value(json!({"influence_coefficients": coefficients})).unwrap();
+    fieldbal::balancing::solve(&s, &options).expect("the pooled coefficients solve");
+}

@@ -17,7 +17,7 @@ use utoipa::ToSchema;
 
 use super::checks;
 use super::linear::{self, Data, Source, Trial};
-use super::supplied::covariance_frame;
+use super::supplied::{covariance_frame, resolvable};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session, SolveOptions, SuppliedCoefficient};
 use crate::balancing::phasor::reading_out;
@@ -273,7 +273,7 @@ pub fn pool_checked(
                 speed_rpm: row.speed_rpm,
                 sensor: first.session.sensors[row.sensor].id.clone(),
                 plane: plane.clone(),
-                amplitude_per_g,
+                amplitude_per_g: resolvable(amplitude_per_g),
                 phase_deg,
                 covariance: Some([[c[(0, 0)], c[(0, 1)]], [c[(1, 0)], c[(1, 1)]]]),
             });
@@ -311,7 +311,7 @@ pub fn convert(
                 [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]]
             });
             SuppliedCoefficient {
-                amplitude_per_g,
+                amplitude_per_g: resolvable(amplitude_per_g),
                 phase_deg,
                 covariance,
                 ..c.clone()

@@ -22,6 +22,18 @@ const MAX_AMPLITUDE_PER_G: f64 = 1e15;
 /// 1e302 g correction whose covariance was answered as `null`). 0 stays
 /// valid: the sensor does not see the plane.
 const MIN_AMPLITUDE_PER_G: f64 = 1e-16;
+
+/// A coefficient computed here (pooled, or converted from a stored version)
+/// as the option accepts it: below [`MIN_AMPLITUDE_PER_G`] it is a rounding's
+/// worth of readings that did not change, so 0 (the sensor does not see the
+/// plane); a pooled 2e-19 unit/g was otherwise refused when used again.
+pub fn resolvable(amplitude_per_g: f64) -> f64 {
+    if amplitude_per_g < MIN_AMPLITUDE_PER_G {
+        0.0
+    } else {
+        amplitude_per_g
+    }
+}
 /// The square of [`MAX_AMPLITUDE_PER_G`], for the covariance's entries.
 const MAX_COVARIANCE: f64 = 1e30;
 

@@ -328,9 +328,7 @@ fn pooled_coefficients_below_what_readings_resolve_are_zero_and_solve_again() {
     // `influence_coefficients` refuses. Pooled (stored, then used through
     // `coefficients_from`, or printed by `fieldbal coefficients`) it is 0, the
     // sensor does not see the plane, so that the coefficients solve again.
-    let reading = |sensor: &str, amplitude: f64, phase: f64| {
-        json!({"speed_rpm": 1480, "sensor": sensor, "amplitude": amplitude, "phase_deg": phase})
-    };
+    let reading = |sensor: &str, amplitude: f64, phase: f64| json!({"speed_rpm": 1480, "sensor": sensor, "amplitude": amplitude, "phase_deg": phase});
     let s = parsed(&json!({
         "name": "hair", "machine": "M",
         "planes": [{"id": "A"}],
@@ -353,4 +351,37 @@ fn pooled_coefficients_below_what_readings_resolve_are_zero_and_solve_again() {
     let coefficients = serde_json::to_value(&pooled.influence_coefficients).unwrap();
     let options = serde_json::from_value(json!({"influence_coefficients": coefficients})).unwrap();
     fieldbal::balancing::solve(&s, &options).expect("the pooled coefficients solve");
+}
+
+#[test]
+fn sessions_that_read_a_sensor_in_different_units_are_not_pooled() {
+    // The same sensor id in µm pk-pk in one session and in mils in another:
+    // pooled as they were, the coefficient averaged numbers of two units (and
+    // the first session's disagreement named a unit slip a "changed rotor").
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let (_, first) = noisy("s1", &rotor, conv, 11);
+    let mut v = serde_json::to_value(noisy("s2", &rotor, conv, 12).1).unwrap();
+    v["sensors"][1]["unit"] = json!("mils_pp");
+    let id = v["sensors"][1]["id"].clone();
+    for run in v["runs"].as_array_mut().unwrap() {
+        for r in run["readings"].as_array_mut().unwrap() {
+            if r["sensor"] == id {
+                r["amplitude"] = json!(r["amplitude"].as_f64().unwrap() / 25.4);
+            }
+        }
+    }
+    let sensor = v["sensors"][1]["id"].as_str().unwrap().to_string();
+    let sessions = vec![("s1".to_string(), first), ("s2".to_string(), parsed(&v))];
+    let err = pool(&sessions, &PoolOptions::default()).unwrap_err();
+    assert_eq!(
+        (err.code, err.field.as_deref()),
+        ("unit_mismatch", Some("sessions[1]")),
+        "{err:?}"
+    );
+    assert!(
+        err.message.contains(&sensor) && err.message.contains("mils_pp"),
+        "{}",
+        err.message
+    );
 }

@@ -128,6 +128,29 @@ pub fn pool_checked(
             "the sessions have no sensor and speed in common to pool",
         ));
     }
+    // A pooled coefficient is in its sensor's unit: one unit per sensor.
+    for f in &rows {
+        let sensor = &first.session.sensors[first.rows[f[0]].sensor];
+        for (s, c) in checked.iter().enumerate().skip(1) {
+            let unit = c.session.sensors[c.rows[f[s]].sensor].unit;
+            if unit != sensor.unit {
+                let name = |u: crate::balancing::model::Unit| {
+                    serde_json::to_value(u)
+                        .ok()
+                        .and_then(|v| v.as_str().map(str::to_string))
+                        .unwrap_or_default()
+                };
+                return Err(InputError::invalid(
+                    "unit_mismatch",
+                    format!("sessions[{s}]"),
+                    format!(
+                        "sensor '{}' reads in {} in session '{}' but in {} in session '{}': pooled coefficients are in one unit per sensor, so give the sensor the same unit (and its readings in it) in every session pooled",
+                        sensor.id, name(unit), names[s], name(sensor.unit), names[0]
+                    ),
+                ));
+            }
+        }
+    }
     let mut plane_ids: Vec<String> = Vec::new();
     for c in checked {
         for p in &c.session.planes {

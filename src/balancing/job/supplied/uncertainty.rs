@@ -17,11 +17,11 @@ use nalgebra::{DMatrix, DVector, Matrix2};
 use num_complex::Complex64;
 
 use super::Supplied;
+use crate::balancing::diagnostics::undetermined;
 use crate::balancing::model::SolveOptions;
 use crate::balancing::phasor::reading_in;
 use crate::balancing::solution::{Solution, Warning};
 use crate::balancing::solve::Fit;
-use crate::balancing::diagnostics::undetermined;
 use crate::balancing::uncertainty::{
     amplitude_95, correction_uncertainty, reading_noise, undetermined_warning, Noise,
 };

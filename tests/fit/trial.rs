@@ -186,3 +186,38 @@ fn a_reference_run_with_supplied_coefficients_is_sized_from_them_not_from_the_ro
         }
     }
 }
+
+#[test]
+fn a_plane_whose_coefficients_are_all_zero_is_sized_from_the_rotor_not_as_0_g() {
+    // Coefficients that say a plane moves no selected reading cannot size its
+    // trial weight: it was suggested as 0 g moving the vibration by 0 %. The
+    // rotor sizes it as when no coefficients are known; without a rotor the
+    // request is refused naming `rotor`.
+    let (s, w, _) = session_value(21, true, false);
+    let ids = support::row_ids(w.nrows());
+    let mut list = Vec::new();
+    for (a, (speed, sensor)) in ids.iter().enumerate() {
+        for j in 0..w.ncols() {
+            let amplitude = if j == 1 { 0.0 } else { w[(a, j)].norm() };
+            list.push(
+                json!({"speed_rpm": speed, "sensor": sensor, "plane": format!("P{j}"),
+                "amplitude_per_g": amplitude,
+                "phase_deg": (-w[(a, j)].arg().to_degrees()).rem_euclid(360.0)}),
+            );
+        }
+    }
+    let options: SolveOptions =
+        serde_json::from_value(json!({"influence_coefficients": list})).unwrap();
+    let session: Session = serde_json::from_value(s.clone()).unwrap();
+    let out = suggest(&session, &options, None).unwrap();
+    assert_eq!(out[0].basis, Basis::Coefficients);
+    assert_eq!(out[1].basis, Basis::Rotor, "{:?}", out[1]);
+    assert!(out[1].expected_change_pct.is_none(), "{:?}", out[1]);
+    assert!((out[1].mass_g - from_rotor(400.0, 2, 1500.0, 250.0)).abs() < 1e-9);
+    let mut without_rotor = s;
+    without_rotor.as_object_mut().unwrap().remove("rotor");
+    let session: Session = serde_json::from_value(without_rotor).unwrap();
+    let e = suggest(&session, &options, None).unwrap_err();
+    assert_eq!((e.code, e.field.as_deref()), ("no_basis", Some("rotor")));
+    assert!(e.message.contains("P1"), "{}", e.message);
+}

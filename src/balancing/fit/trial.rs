@@ -137,20 +137,26 @@ pub fn suggest(
     let mut out = Vec::with_capacity(selection.planes.len());
     for &j in &selection.planes {
         let plane = &session.planes[j];
-        let (ideal, basis) = match &w {
-            Some(w) => {
-                let a = DVector::from_fn(selection.rows.len(), |i, _| {
+        // The plane's coefficients on the selected rows; all zero (the plane
+        // moves no reading) they cannot size a trial weight (it was 0 g).
+        let column = w
+            .as_ref()
+            .map(|w| {
+                DVector::from_fn(selection.rows.len(), |i, _| {
                     w[(selection.rows[i], j)] * selection.weights[i]
-                });
-                (from_coefficients(&a, &y), Basis::Coefficients)
-            }
+                })
+            })
+            .filter(|a| a.norm() > 0.0);
+        let (ideal, basis) = match &column {
+            Some(a) => (from_coefficients(a, &y), Basis::Coefficients),
             None => {
                 let rotor = session.rotor.as_ref().ok_or_else(|| {
-                    InputError::invalid(
-                        "no_basis",
-                        "rotor",
-                        "no influence coefficients are known for this session, so a trial weight is sized from the rotor: give rotor (mass_kg, service_speed_rpm) and each plane's radius_mm, or supply coefficients",
-                    )
+                    let message = if w.is_some() {
+                        format!("the influence coefficients of plane {} are 0 at every sensor and speed selected, so they cannot size its trial weight: give rotor (mass_kg, service_speed_rpm) and the plane's radius_mm to size it from the rotor, or coefficients that see the plane", plane.id)
+                    } else {
+                        "no influence coefficients are known for this session, so a trial weight is sized from the rotor: give rotor (mass_kg, service_speed_rpm) and each plane's radius_mm, or supply coefficients".to_string()
+                    };
+                    InputError::invalid("no_basis", "rotor", message)
                 })?;
                 let r = plane.radius_mm.ok_or_else(|| {
                     InputError::invalid(

@@ -316,3 +316,66 @@ async fn a_trim_from_a_machines_stored_coefficients_through_the_service() {
         "{err}"
     );
 }
+
+#[tokio::test]
+async fn stored_coefficients_in_another_unit_than_the_sessions_sensor_are_refused() {
+    // A machine's coefficients pooled from sessions reading in µm pk-pk, used
+    // by a new job whose set-up reads the same sensor in mils: the correction
+    // came out 25.4 times off without a word. Pooled coefficients carry
+    // their sensor's unit, and `coefficients_from` refuses a mismatch.
+    let (_dir, server, client) = fresh_server().await;
+    let rotor = Rotor::new();
+    let conv = Conventions::default();
+    let (status, _, m) = post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "ID-FAN-3", "name": "ID fan 3"}),
+    )
+    .await;
+    assert_eq!(status, 201, "{m}");
+    let s = session(
+        conv,
+        first_runs(&rotor, conv, &mut Noise::none(), &NO_RUNOUT, 0.0),
+    );
+    let (status, _, created) = post(&client, &server.url("/api/v1/sessions"), &s).await;
+    assert_eq!(status, 201, "{created}");
+    let url = server.url("/api/v1/machines/ID-FAN-3/coefficients");
+    let (status, _, v1) = post(&client, &url, &json!({"sessions": [created["id"]]})).await;
+    assert_eq!(status, 201, "{v1}");
+    for c in v1["influence_coefficients"].as_array().unwrap() {
+        assert_eq!(c["unit"], "um_pp", "{c}");
+    }
+
+    let mut trim = trim_session(&rotor, conv, false);
+    let sensor = trim["sensors"][1]["id"].clone();
+    trim["sensors"][1]["unit"] = json!("mils_pp");
+    let body = json!({"session": trim, "options": {"coefficients_from": {"machine": "ID-FAN-3"}}});
+    let (status, _, err) = post(&client, &server.url("/api/v1/solve"), &body).await;
+    assert_eq!(
+        (status, &err["error"]["code"], &err["error"]["field"]),
+        (
+            422,
+            &json!("unit_mismatch"),
+            &json!("options.coefficients_from")
+        ),
+        "{err}"
+    );
+    let message = err["error"]["message"].as_str().unwrap();
+    assert!(
+        message.contains(sensor.as_str().unwrap()) && message.contains("mils_pp"),
+        "{message}"
+    );
+
+    // Supplied with their unit, the same list is refused naming the entry.
+    let list = v1["influence_coefficients"].clone();
+    let s: fieldbal::balancing::Session = serde_json::from_value(trim).unwrap();
+    let options = serde_json::from_value(json!({"influence_coefficients": list})).unwrap();
+    let err = fieldbal::balancing::solve(&s, &options).unwrap_err();
+    assert_eq!(err.code, "unit_mismatch", "{err:?}");
+    assert!(
+        err.field.as_deref().is_some_and(
+            |f| f.starts_with("options.influence_coefficients[") && f.ends_with("].unit")
+        ),
+        "{err:?}"
+    );
+}

@@ -17,7 +17,7 @@ use utoipa::ToSchema;
 
 use super::checks;
 use super::linear::{self, Data, Source, Trial};
-use super::supplied::{covariance_frame, resolvable};
+use super::supplied::{covariance_frame, resolvable, unit_name};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session, SolveOptions, SuppliedCoefficient};
 use crate::balancing::phasor::reading_out;
@@ -134,18 +134,12 @@ pub fn pool_checked(
         for (s, c) in checked.iter().enumerate().skip(1) {
             let unit = c.session.sensors[c.rows[f[s]].sensor].unit;
             if unit != sensor.unit {
-                let name = |u: crate::balancing::model::Unit| {
-                    serde_json::to_value(u)
-                        .ok()
-                        .and_then(|v| v.as_str().map(str::to_string))
-                        .unwrap_or_default()
-                };
                 return Err(InputError::invalid(
                     "unit_mismatch",
                     format!("sessions[{s}]"),
                     format!(
                         "sensor '{}' reads in {} in session '{}' but in {} in session '{}': pooled coefficients are in one unit per sensor, so give the sensor the same unit (and its readings in it) in every session pooled",
-                        sensor.id, name(unit), names[s], name(sensor.unit), names[0]
+                        sensor.id, unit_name(unit), names[s], unit_name(sensor.unit), names[0]
                     ),
                 ));
             }
@@ -292,9 +286,11 @@ pub fn pool_checked(
         for (j, plane) in plane_ids.iter().enumerate() {
             let (amplitude_per_g, phase_deg) = reading_out(conv, est.w[(a, j)]);
             let c = covariance_frame(conv, &wcov[a][j]);
+            let sensor = &first.session.sensors[row.sensor];
             coefficients.push(SuppliedCoefficient {
                 speed_rpm: row.speed_rpm,
-                sensor: first.session.sensors[row.sensor].id.clone(),
+                sensor: sensor.id.clone(),
+                unit: Some(sensor.unit),
                 plane: plane.clone(),
                 amplitude_per_g: resolvable(amplitude_per_g),
                 phase_deg,

@@ -225,7 +225,7 @@ pub struct SuppliedCoefficient {
     pub speed_rpm: f64,
     pub sensor: String,
     pub plane: String,
-    /// Sensor unit per gram, 0 to 1e15.
+    /// Sensor unit per gram: 0 (not seen), or 1e-16 to 1e15.
     pub amplitude_per_g: f64,
     /// In the session's `phase` convention.
     pub phase_deg: f64,
@@ -233,6 +233,10 @@ pub struct SuppliedCoefficient {
     /// real axis at phase 0 and imaginary axis at +90° in the session's phase convention.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub covariance: Option<[[f64; 2]; 2]>,
+    /// The unit the coefficient's amplitude is in (per gram); when given it
+    /// must be the session's unit of that sensor. Pooled coefficients carry it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<Unit>,
 }
 
 /// Which machine's stored coefficients a solve uses (latest version when absent).

@@ -4,6 +4,7 @@
 //! session's solutions and trial weights.
 
 use crate::balancing::job::pool::{self, Pooled};
+use crate::balancing::job::supplied::unit_name;
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::InputError;
 use crate::db::machines::{self, Missing};
@@ -64,6 +65,30 @@ pub async fn resolve(
     body.insert("sessions".into(), serde_json::json!(stored.sessions));
     let pooled: Pooled = serde_json::from_value(serde_json::Value::Object(body))
         .map_err(|e| ApiError::internal(&e))?;
+    // Stored coefficients are in their sensors' units: a session that reads
+    // a sensor in another unit would get a correction off by their ratio.
+    for c in &pooled.influence_coefficients {
+        let (Some(unit), Some(sensor)) =
+            (c.unit, session.sensors.iter().find(|s| s.id == c.sensor))
+        else {
+            continue;
+        };
+        if unit != sensor.unit {
+            return Err(fail(InputError::invalid(
+                "unit_mismatch",
+                "options.coefficients_from",
+                format!(
+                    "machine '{}' coefficient version {} is in {} per gram for sensor '{}', which this session reads in {}: give the sensor that unit (and its readings in it), or pool coefficients from sessions in {}",
+                    from.machine,
+                    stored.version,
+                    unit_name(unit),
+                    c.sensor,
+                    unit_name(sensor.unit),
+                    unit_name(sensor.unit)
+                ),
+            )));
+        }
+    }
     options.influence_coefficients = Some(pool::convert(
         &pooled.influence_coefficients,
         pooled.conventions,

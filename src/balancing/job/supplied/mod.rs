@@ -12,7 +12,7 @@ use num_complex::Complex64;
 mod resolve;
 mod uncertainty;
 
-pub use resolve::{covariance_frame, resolvable, resolve};
+pub use resolve::{covariance_frame, resolvable, resolve, unit_name};
 pub use uncertainty::fill;
 
 /// Supplied coefficients on the session's rows, internal frame.

@@ -6,7 +6,9 @@ use nalgebra::{DMatrix, Matrix2};
 
 use super::Supplied;
 use crate::balancing::error::InputError;
-use crate::balancing::model::{Conventions, PhaseConvention, SolveOptions, SuppliedCoefficient};
+use crate::balancing::model::{
+    Conventions, PhaseConvention, SolveOptions, SuppliedCoefficient, Unit,
+};
 use crate::balancing::phasor::reading_in;
 use crate::balancing::validate::Checked;
 
@@ -51,6 +53,14 @@ fn frame(conv: Conventions) -> Matrix2<f64> {
 pub fn covariance_frame(conv: Conventions, c: &Matrix2<f64>) -> Matrix2<f64> {
     let f = frame(conv);
     f * c * f
+}
+
+/// A unit as the wire spells it (`um_pp`).
+pub fn unit_name(unit: Unit) -> String {
+    serde_json::to_value(unit)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_string))
+        .unwrap_or_default()
 }
 
 fn bad(field: String, message: impl Into<String>) -> InputError {
@@ -121,6 +131,18 @@ pub fn resolve(checked: &Checked, options: &SolveOptions) -> Result<Option<Suppl
                 format!("the session has no sensor '{}'", c.sensor),
             ));
         };
+        if let Some(unit) = c.unit.filter(|&u| u != session.sensors[s].unit) {
+            return Err(InputError::invalid(
+                "unit_mismatch",
+                format!("{FIELD}[{i}].unit"),
+                format!(
+                    "the coefficient is in {} per gram but the session reads sensor '{}' in {}",
+                    unit_name(unit),
+                    c.sensor,
+                    unit_name(session.sensors[s].unit)
+                ),
+            ));
+        }
         let Some(j) = session.planes.iter().position(|pl| pl.id == c.plane) else {
             return Err(InputError::invalid(
                 "unknown_plane",

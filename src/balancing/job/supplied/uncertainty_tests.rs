@@ -139,6 +139,7 @@ fn random_job(rng: &mut StdRng) -> (Session, SolveOptions) {
                     amplitude_per_g: amp,
                     phase_deg: rng.gen_range(0.0..360.0),
                     covariance: Some(cov),
+                    unit: None,
                 });
             }
         }

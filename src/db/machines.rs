@@ -10,7 +10,7 @@ use sqlx::Row;
 use utoipa::ToSchema;
 
 use super::idempotency::{self, Idem};
-use super::{engine, sessions, Db, StoreError};
+use super::{engine, sessions, Db, ListPage, StoreError};
 use crate::balancing::model::{Rotor, Session};
 
 /// A machine as posted.
@@ -45,6 +45,9 @@ pub struct MachineList {
     pub total: i64,
     pub limit: i64,
     pub offset: i64,
+    /// When more machines follow: `before` for the next page (see `SessionList`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub next: Option<String>,
 }
 
 /// One of a machine's sessions, with the before/after summary of its latest solution.
@@ -144,23 +147,32 @@ pub async fn create(
 }
 
 /// A page of machines, newest first.
-pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<MachineList, StoreError> {
-    let rows = sqlx::query(
-        "SELECT id, name, rotor, notes, created_at FROM machines ORDER BY seq DESC LIMIT $1 OFFSET $2",
+pub async fn list(db: &Db, page: ListPage) -> Result<MachineList, StoreError> {
+    // One more than the page: whether a next page exists.
+    let mut rows = sqlx::query(
+        "SELECT seq, id, name, rotor, notes, created_at FROM machines
+         WHERE seq < $1 ORDER BY seq DESC LIMIT $2 OFFSET $3",
     )
-    .bind(limit)
-    .bind(offset)
+    .bind(page.before.unwrap_or(i64::MAX))
+    .bind(page.limit + 1)
+    .bind(page.offset)
     .fetch_all(&db.pool)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM machines")
         .fetch_one(&db.pool)
         .await?
         .get(0);
+    let more = rows.len() as i64 > page.limit;
+    rows.truncate(page.limit as usize);
+    let next = more
+        .then(|| rows.last().map(|r| r.get::<i64, _>("seq").to_string()))
+        .flatten();
     Ok(MachineList {
         machines: rows.iter().map(machine_from).collect::<Result<_, _>>()?,
         total,
-        limit,
-        offset,
+        limit: page.limit,
+        offset: page.offset,
+        next,
     })
 }
 

@@ -30,6 +30,16 @@ use tokio::sync::{Mutex, OwnedMutexGuard};
 
 use crate::balancing::InputError;
 
+/// Which page of a newest-first list (sessions, machines): `limit` items,
+/// skipping `offset`, of those stored before the cursor `before` (the
+/// previous page's `next`; all when `None`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ListPage {
+    pub limit: i64,
+    pub offset: i64,
+    pub before: Option<i64>,
+}
+
 pub use runs::RunVersion;
 pub use sessions::{SessionList, SessionSummary};
 pub use solutions::{StoredSolution, UsedRun};

@@ -5,7 +5,7 @@ use sqlx::Row;
 use utoipa::ToSchema;
 
 use super::idempotency::Keep;
-use super::{engine, runs, Db, StoreError};
+use super::{engine, runs, Db, ListPage, StoreError};
 use crate::balancing::model::Session;
 
 /// One line of the session list.
@@ -29,6 +29,11 @@ pub struct SessionList {
     pub total: i64,
     pub limit: i64,
     pub offset: i64,
+    /// When more sessions follow: pass it as `before` for the next page, which
+    /// then neither repeats nor skips one however many are stored or deleted
+    /// meanwhile (an `offset` shifts with them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub next: Option<String>,
 }
 
 /// Store a validated session under `id` with its runs, in one transaction.
@@ -64,20 +69,27 @@ pub async fn create(
 }
 
 /// A page of sessions, newest first.
-pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<SessionList, StoreError> {
-    let rows = sqlx::query(
-        "SELECT s.id, s.name, s.machine, s.created_at,
+pub async fn list(db: &Db, page: ListPage) -> Result<SessionList, StoreError> {
+    // One more than the page: whether a next page exists.
+    let mut rows = sqlx::query(
+        "SELECT s.seq, s.id, s.name, s.machine, s.created_at,
                 (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs
-         FROM sessions s ORDER BY s.seq DESC LIMIT $1 OFFSET $2",
+         FROM sessions s WHERE s.seq < $1 ORDER BY s.seq DESC LIMIT $2 OFFSET $3",
     )
-    .bind(limit)
-    .bind(offset)
+    .bind(page.before.unwrap_or(i64::MAX))
+    .bind(page.limit + 1)
+    .bind(page.offset)
     .fetch_all(&db.pool)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM sessions")
         .fetch_one(&db.pool)
         .await?
         .get(0);
+    let more = rows.len() as i64 > page.limit;
+    rows.truncate(page.limit as usize);
+    let next = more
+        .then(|| rows.last().map(|r| r.get::<i64, _>("seq").to_string()))
+        .flatten();
     let sessions = rows
         .into_iter()
         .map(|r| SessionSummary {
@@ -91,8 +103,9 @@ pub async fn list(db: &Db, limit: i64, offset: i64) -> Result<SessionList, Store
     Ok(SessionList {
         sessions,
         total,
-        limit,
-        offset,
+        limit: page.limit,
+        offset: page.offset,
+        next,
     })
 }
 

@@ -202,3 +202,121 @@ async fn fifty_concurrent_posts_are_all_stored_and_listed() {
     assert_eq!(paged, all);
     server.shutdown().await;
 }
+
+/// Every id of the list at `path` (`sessions` or `machines`), walked a page of
+/// `limit` at a time by the `next` cursor, with `between(seen so far)` run
+/// between pages (a writer at a stand storing or deleting meanwhile).
+async fn walk(
+    server: &common::Server,
+    client: &reqwest::Client,
+    path: &str,
+    key: &str,
+    limit: usize,
+    mut between: impl FnMut(&[String]) -> Option<(reqwest::Method, String, Value)>,
+) -> Vec<String> {
+    let mut seen = Vec::new();
+    let mut query = format!("limit={limit}");
+    loop {
+        let (status, _, page) = send(client.get(server.url(&format!("{path}?{query}")))).await;
+        assert_eq!(status, 200, "{page}");
+        let items = page[key].as_array().unwrap();
+        assert!(items.len() <= limit);
+        seen.extend(items.iter().map(|s| s["id"].as_str().unwrap().to_string()));
+        if let Some((method, url, body)) = between(&seen) {
+            let (status, _, b) = send(client.request(method, server.url(&url)).json(&body)).await;
+            assert!((200..300).contains(&status), "{url}: {status} {b}");
+        }
+        match page["next"].as_str() {
+            Some(next) => query = format!("limit={limit}&before={next}"),
+            None => break,
+        }
+    }
+    seen
+}
+
+#[tokio::test]
+async fn paging_by_the_next_cursor_neither_repeats_nor_loses_items_while_others_write() {
+    // Offset paging of a newest-first list repeats the last item of a page
+    // when a session is stored between two pages, and skips one when a
+    // session is deleted. The `next` cursor continues after the last item seen.
+    let (_dir, server, client) = fresh_server().await;
+    let ex = example(SOLVABLE_EXAMPLES[0]);
+    let mut ids = Vec::new();
+    for _ in 0..7 {
+        let (status, _, created) =
+            post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
+        assert_eq!(status, 201);
+        ids.push(created["id"].as_str().unwrap().to_string());
+    }
+    let newest_first: Vec<String> = ids.iter().rev().cloned().collect();
+    let sessions = "/api/v1/sessions";
+    let seen = walk(&server, &client, sessions, "sessions", 3, |_| {
+        Some((
+            reqwest::Method::POST,
+            sessions.to_string(),
+            ex["session"].clone(),
+        ))
+    })
+    .await;
+    assert_eq!(seen, newest_first, "a session stored between pages");
+    // Deleting a session already seen loses none of the rest.
+    let seen = walk(&server, &client, sessions, "sessions", 3, |seen| {
+        (seen.len() == 3).then(|| {
+            (
+                reqwest::Method::DELETE,
+                format!("{sessions}/{}", seen[0]),
+                json!(null),
+            )
+        })
+    })
+    .await;
+    assert_eq!(seen.len(), 10, "{seen:?}");
+    assert_eq!(
+        seen[3..],
+        newest_first[..],
+        "a session deleted between pages"
+    );
+    // The last page says there is no next; a bad cursor is named.
+    let (_, _, all) = send(client.get(server.url("/api/v1/sessions?limit=1000"))).await;
+    assert!(all.get("next").is_none(), "{all}");
+    for bad in ["x", "0", "-3", "1.5"] {
+        let (status, _, err) =
+            send(client.get(server.url(&format!("/api/v1/sessions?before={bad}")))).await;
+        assert_eq!(
+            (status, &err["error"]["field"]),
+            (422, &json!("before")),
+            "{bad}: {err}"
+        );
+    }
+    let (status, _, err) =
+        send(client.get(server.url(&format!("/api/v1/sessions?before=5&offset=2")))).await;
+    assert_eq!(
+        (status, &err["error"]["field"]),
+        (422, &json!("offset")),
+        "{err}"
+    );
+
+    // Machines page the same way.
+    let machines = "/api/v1/machines";
+    for k in 0..5 {
+        let (status, _, _) = post(
+            &client,
+            &server.url(machines),
+            &json!({"id": format!("M{k}"), "name": "pump"}),
+        )
+        .await;
+        assert_eq!(status, 201);
+    }
+    let mut k = 5;
+    let seen = walk(&server, &client, machines, "machines", 2, |_| {
+        k += 1;
+        Some((
+            reqwest::Method::POST,
+            machines.to_string(),
+            json!({"id": format!("M{k}"), "name": "pump"}),
+        ))
+    })
+    .await;
+    assert_eq!(seen, ["M4", "M3", "M2", "M1", "M0"]);
+    server.shutdown().await;
+}

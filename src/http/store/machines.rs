@@ -102,8 +102,8 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<MachineList>, ApiError> {
-    let (limit, offset) = ListParams::bounds(params)?;
-    Ok(Json(machines::list(&state.db, limit, offset).await?))
+    let page = ListParams::bounds(params)?;
+    Ok(Json(machines::list(&state.db, page).await?))
 }
 
 #[utoipa::path(get, path = "/api/v1/machines/{id}", tag = "machines",

@@ -11,6 +11,7 @@ use utoipa::{IntoParams, ToSchema};
 use crate::balancing::model::Session;
 use crate::balancing::{self, InputError};
 use crate::db::idempotency;
+use crate::db::ListPage;
 use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
@@ -37,16 +38,44 @@ pub struct ListParams {
     /// Sessions to skip (default 0).
     #[param(minimum = 0)]
     pub offset: Option<i64>,
+    /// The previous page's `next`: the page continues after its last item,
+    /// whatever was stored or deleted meanwhile (instead of `offset`).
+    pub before: Option<String>,
 }
 
 impl ListParams {
-    /// `(limit, offset)` of a page of sessions or machines (limit default 50,
-    /// at most 1000), or the contract's error naming the parameter.
-    pub fn bounds(
-        params: Result<Query<ListParams>, QueryRejection>,
-    ) -> Result<(i64, i64), ApiError> {
+    /// The page of sessions or machines asked for (limit default 50, at most
+    /// 1000), or the contract's error naming the parameter.
+    pub fn bounds(params: Result<Query<ListParams>, QueryRejection>) -> Result<ListPage, ApiError> {
         let Query(p) = params.map_err(headers::invalid_query)?;
-        headers::page_bounds(p.limit, p.offset, 50, 1000)
+        let (limit, offset) = headers::page_bounds(p.limit, p.offset, 50, 1000)?;
+        let before = match p.before.as_deref() {
+            None => None,
+            Some(c) => match c.parse::<i64>() {
+                Ok(n) if n > 0 => Some(n),
+                _ => {
+                    return Err(InputError::invalid(
+                        "invalid_value",
+                        "before",
+                        "before is the `next` of a previous page",
+                    )
+                    .into())
+                }
+            },
+        };
+        if before.is_some() && offset != 0 {
+            return Err(InputError::invalid(
+                "conflicting_options",
+                "offset",
+                "give offset or before (the next page after a cursor), not both",
+            )
+            .into());
+        }
+        Ok(ListPage {
+            limit,
+            offset,
+            before,
+        })
     }
 }
 
@@ -105,8 +134,8 @@ pub async fn list(
     State(state): State<AppState>,
     params: Result<Query<ListParams>, QueryRejection>,
 ) -> Result<Json<SessionList>, ApiError> {
-    let (limit, offset) = ListParams::bounds(params)?;
-    Ok(Json(db::sessions::list(&state.db, limit, offset).await?))
+    let page = ListParams::bounds(params)?;
+    Ok(Json(db::sessions::list(&state.db, page).await?))
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}", tag = "sessions",

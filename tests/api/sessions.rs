@@ -288,8 +288,7 @@ async fn paging_by_the_next_cursor_neither_repeats_nor_loses_items_while_others_
             "{bad}: {err}"
         );
     }
-    let (status, _, err) =
-        send(client.get(server.url(&format!("/api/v1/sessions?before=5&offset=2")))).await;
+    let (status, _, err) = send(client.get(server.url("/api/v1/sessions?before=5&offset=2"))).await;
     assert_eq!(
         (status, &err["error"]["field"]),
         (422, &json!("offset")),

@@ -15,6 +15,7 @@ use crate::balancing::model::{Rotor, Session};
 
 /// A machine as posted.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct NewMachine {
     pub id: String,
@@ -24,6 +25,9 @@ pub struct NewMachine {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub notes: Option<String>,
 }
+
+// Objects only: a positional array is refused (see `balancing::wire`).
+crate::balancing::wire::objects_only!(NewMachine);
 
 /// A stored machine.
 #[derive(Debug, Clone, Serialize, ToSchema)]

@@ -124,6 +124,49 @@ async fn every_request_type_refuses_a_positional_array() {
     }
 }
 
+#[tokio::test]
+async fn the_v2_structs_refuse_a_positional_array_too() {
+    // A machine, a runout vector, a supplied coefficient and
+    // `coefficients_from` posted as arrays were taken field by field in the
+    // order of the Rust struct (`["ID-FAN-3", "fan"]` stored a machine).
+    let (_dir, server, client) = fresh_server().await;
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    let sensor = session["sensors"][0]["id"].clone();
+    let plane = session["planes"][0]["id"].clone();
+    let speed = session["runs"][0]["readings"][0]["speed_rpm"].clone();
+    let mut runout = session.clone();
+    runout["runout"] = json!([[sensor, 12.0, 30.0]]);
+    let mut reference_only = session.clone();
+    reference_only["runs"].as_array_mut().unwrap().truncate(1);
+    let cases: Vec<(&str, Value, Option<&str>)> = vec![
+        ("/api/v1/machines", json!(["ID-FAN-3", "fan"]), None),
+        (
+            "/api/v1/solve",
+            json!({"session": runout}),
+            Some("session.runout[0]"),
+        ),
+        (
+            "/api/v1/solve",
+            json!({"session": reference_only,
+                   "options": {"influence_coefficients": [[speed, sensor, plane, 2.0, 180.0]]}}),
+            Some("options.influence_coefficients[0]"),
+        ),
+        (
+            "/api/v1/solve",
+            json!({"session": session, "options": {"coefficients_from": ["ID-FAN-3"]}}),
+            Some("options.coefficients_from"),
+        ),
+    ];
+    for (path, body, field) in cases {
+        let (status, _, answer) = post(&client, &server.url(path), &body).await;
+        assert_eq!(status, 422, "{path} {body}: {answer}");
+        assert_eq!(answer["error"]["code"], "invalid_type", "{path}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(message.contains("not an array"), "{path}: {message}");
+        assert_eq!(answer["error"]["field"].as_str(), field, "{path} {body}");
+    }
+}
+
 fn assert_no_null(v: &Value, path: &str) {
     match v {
         Value::Null => panic!("null at {path}"),

@@ -210,6 +210,7 @@ pub struct Session {
 /// The slow-roll vector of a sensor (v2 "Runout"): in the sensor's unit and
 /// the session's phase convention.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct Runout {
     pub sensor: String,
@@ -220,6 +221,7 @@ pub struct Runout {
 /// A supplied influence coefficient (v2 "Coefficients supplied or stored"):
 /// the solution's shape, with an optional covariance.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct SuppliedCoefficient {
     pub speed_rpm: f64,
@@ -241,6 +243,7 @@ pub struct SuppliedCoefficient {
 
 /// Which machine's stored coefficients a solve uses (latest version when absent).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct CoefficientsFrom {
     pub machine: String,
@@ -340,6 +343,9 @@ objects_only!(
     Reading,
     Run,
     Session,
+    Runout,
+    SuppliedCoefficient,
+    CoefficientsFrom,
     RowWeight,
     SolveOptions,
     SolveRequest,

@@ -228,3 +228,71 @@ async fn bad_input_is_refused_with_the_field_named() {
     }
     server.shutdown().await;
 }
+
+/// An empty `options.sensors` or `options.planes` answered 200 with no results
+/// (session 19); a repeated id was silently merged. Both are refused as
+/// `/solve` refuses them: `no_rows` / `no_planes` naming the list,
+/// `duplicate_id` naming the repeat.
+#[tokio::test]
+async fn empty_or_repeated_selections_are_refused_like_the_solves() {
+    let cases: Vec<(&str, Value, &str, &str)> = vec![
+        (
+            "no sensors",
+            rotor_with(|v| v["options"]["sensors"] = json!([])),
+            "no_rows",
+            "options.sensors",
+        ),
+        (
+            "no planes",
+            rotor_with(|v| v["options"]["planes"] = json!([])),
+            "no_planes",
+            "options.planes",
+        ),
+        (
+            "a sensor twice",
+            rotor_with(|v| v["options"]["sensors"] = json!(["1H", "1H"])),
+            "duplicate_id",
+            "options.sensors[1]",
+        ),
+        (
+            "a plane twice",
+            rotor_with(|v| v["options"]["planes"] = json!(["A", "A"])),
+            "duplicate_id",
+            "options.planes[1]",
+        ),
+        (
+            "unknown plane",
+            rotor_with(|v| v["options"]["planes"] = json!(["A", "B"])),
+            "unknown_plane",
+            "options.planes[1]",
+        ),
+        (
+            "unknown sensor",
+            rotor_with(|v| v["options"]["sensors"] = json!(["9V"])),
+            "unknown_sensor",
+            "options.sensors[0]",
+        ),
+    ];
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/identify/rotor");
+    for (name, body, want_code, want_field) in cases {
+        let (status, _, answer) = post(&client, &url, &body).await;
+        assert_eq!(status, 422, "{name}: {answer}");
+        assert_eq!(answer["error"]["code"], want_code, "{name}: {answer}");
+        assert_eq!(answer["error"]["field"], want_field, "{name}: {answer}");
+    }
+    // The same lists without the fault are answered.
+    let (status, _, answer) = post(
+        &client,
+        &url,
+        &rotor_with(|v| v["options"] = json!({"sensors": ["1H"], "planes": ["A"]})),
+    )
+    .await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(
+        answer["results"].as_array().map(Vec::len),
+        Some(1),
+        "{answer}"
+    );
+    server.shutdown().await;
+}

@@ -48,6 +48,11 @@ pub fn displacement_per_unit(unit: Unit, w: f64) -> Complex64 {
     }
 }
 
+/// The selected ids' indices, refused as `/solve` refuses its selection
+/// (`balancing::session::select`): an unknown id (`unknown_sensor`,
+/// `unknown_plane`) or a repeated one (`duplicate_id`) naming the entry, an
+/// empty list naming the list (`no_rows` for sensors, `no_planes`: it
+/// answered 200 with no results, session 19).
 fn indices(
     field: &str,
     wanted: &Option<Vec<String>>,
@@ -57,8 +62,21 @@ fn indices(
     let Some(wanted) = wanted else {
         return Ok((0..ids.len()).collect());
     };
-    let mut out = Vec::new();
+    if wanted.is_empty() {
+        let code = if what == "plane" {
+            "no_planes"
+        } else {
+            "no_rows"
+        };
+        return Err(InputError::invalid(
+            code,
+            format!("options.{field}"),
+            format!("every {what} is excluded: select at least one {what}, or leave the option out for all"),
+        ));
+    }
+    let mut out = Vec::with_capacity(wanted.len());
     for (i, id) in wanted.iter().enumerate() {
+        let f = format!("options.{field}[{i}]");
         let k = ids.iter().position(|x| x == id).ok_or_else(|| {
             InputError::invalid(
                 if what == "plane" {
@@ -66,13 +84,18 @@ fn indices(
                 } else {
                     "unknown_sensor"
                 },
-                format!("options.{field}[{i}]"),
+                f.clone(),
                 format!("the session has no {what} '{id}'"),
             )
         })?;
-        if !out.contains(&k) {
-            out.push(k);
+        if out.contains(&k) {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                f,
+                format!("{what} '{id}' is listed twice"),
+            ));
         }
+        out.push(k);
     }
     Ok(out)
 }

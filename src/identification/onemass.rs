@@ -91,6 +91,123 @@ impl Fit {
     }
 }
 
+/// The free parameters of a fit under `setup`, in the order of the fit's
+/// columns: `c, b, [q], [m], [Re U, Im U]`.
+fn free(setup: &Setup) -> (bool, bool, bool) {
+    (
+        setup.coupling == Coupling::Estimated,
+        setup.mass.is_none() && setup.forcing_at_weight,
+        !setup.forcing_at_weight,
+    )
+}
+
+impl Fit {
+    /// Standard deviation of [`Fit::damping_ratio`], to first order, from the
+    /// scatter of the responses about the fitted curve.
+    ///
+    /// The noise is taken as relative (a reading's error in proportion to its
+    /// size, whatever its unit): `σ²` per real component is `|z|²` times the
+    /// mean square of the relative residuals over their degrees of freedom,
+    /// at least `floor²`. The fit is the equation error of (6.1), which is
+    /// the response error weighted by `|D|²` (`D` the dynamic stiffness
+    /// `c − mω² + i(ωb − q)`), so the parameters' covariance is the sandwich
+    /// `H⁻¹ (Jᵀ W Σ W J) H⁻¹`, `H = Jᵀ W J`, `J` the responses' derivatives
+    /// (real and imaginary rows), carried to `ζ` by its gradient. Where the
+    /// speeds lie enters through `J`: a speed near the critical says much
+    /// about the damping, the far tails little. Infinite when the parameters
+    /// are not resolved at all (no degrees of freedom, `J` rank-deficient).
+    pub fn damping_ratio_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
+        let (q_free, m_free, u_free) = free(setup);
+        let p = 2 + usize::from(q_free) + usize::from(m_free) + 2 * usize::from(u_free);
+        let n = points.len();
+        if 2 * n <= p {
+            return f64::INFINITY;
+        }
+        let i = Complex64::i();
+        let one_k = 1.0 - self.kappa;
+        // Rows √w·J (for H) and the points' noise scale |z| and weight w.
+        let mut b = DMatrix::zeros(2 * n, p);
+        let mut noise = Vec::with_capacity(n);
+        let mut relative_ss = 0.0;
+        for (r, pt) in points.iter().enumerate() {
+            let w = pt.w;
+            let d = Complex64::new(self.c - self.m * w * w, w * self.b * one_k - self.q);
+            let z = self.u * w * w / d;
+            let size = pt.z.norm().max(z.norm());
+            if size > 0.0 {
+                relative_ss += (z - pt.z).norm_sqr() / (size * size);
+            }
+            let mut cols = vec![-z / d, -z * i * w * one_k / d];
+            if q_free {
+                cols.push(z * i / d);
+            }
+            if m_free {
+                cols.push(z * w * w / d);
+            }
+            if u_free {
+                cols.push(w * w / d);
+                cols.push(i * w * w / d);
+            }
+            let root_w = d.norm();
+            for (j, v) in cols.into_iter().enumerate() {
+                b[(2 * r, j)] = root_w * v.re;
+                b[(2 * r + 1, j)] = root_w * v.im;
+            }
+            noise.push((size, root_w));
+        }
+        let sigma2 = (relative_ss / (2 * n - p) as f64).max(floor * floor);
+        // ζ = (1−κ) b / (2√(cm)) − q / (2c): its gradient in the columns' order.
+        let (c, bb, q, m) = (self.c, self.b, self.q, self.m);
+        let root = (c * m).sqrt();
+        let mut g = vec![
+            -one_k * bb / (4.0 * c * root) + q / (2.0 * c * c),
+            one_k / (2.0 * root),
+        ];
+        if q_free {
+            g.push(-1.0 / (2.0 * c));
+        }
+        if m_free {
+            g.push(-one_k * bb / (4.0 * m * root));
+        }
+        if u_free {
+            g.extend([0.0, 0.0]);
+        }
+        if !b.iter().chain(&g).all(|x| x.is_finite()) {
+            return f64::INFINITY;
+        }
+        let unscaled = b.clone();
+        let scale = lsq::unit_columns(&mut b);
+        let svd = b.svd(false, true);
+        let Some(vt) = svd.v_t else {
+            return f64::INFINITY;
+        };
+        let smax = svd.singular_values.max();
+        if !(smax > 0.0 && svd.singular_values.min() > lsq::RANK_TOLERANCE * smax) {
+            return f64::INFINITY;
+        }
+        // h = H⁻¹ g = S⁻¹ V Σ⁻² Vᵀ S⁻¹ g.
+        let gs = DVector::from_iterator(p, (0..p).map(|j| g[j] / scale[j]));
+        let mut h = DVector::zeros(p);
+        for (k, &sk) in svd.singular_values.iter().enumerate() {
+            let proj = vt.row(k).transpose().dot(&gs) / (sk * sk);
+            h += vt.row(k).transpose() * proj;
+        }
+        for j in 0..p {
+            h[j] /= scale[j];
+        }
+        // var ζ = Σ_k σ²|z_k|² w_k ‖√w_k J_k h‖² (the sandwich's middle, row by row).
+        let bh = unscaled * h;
+        let var: f64 = noise
+            .iter()
+            .enumerate()
+            .map(|(r, &(size, root_w))| {
+                sigma2 * (size * root_w).powi(2) * (bh[2 * r].powi(2) + bh[2 * r + 1].powi(2))
+            })
+            .sum();
+        var.sqrt()
+    }
+}
+
 /// Least-squares fit of (6.1) stacked over `points` (real and imaginary rows).
 pub fn fit(setup: &Setup, points: &[Point]) -> Result<Fit, InputError> {
     let kappa = match setup.coupling {

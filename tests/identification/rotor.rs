@@ -191,3 +191,152 @@ fn two_modes_in_range_give_a_poor_fit_warning_and_a_speed_range_fits_each() {
         );
     }
 }
+
+/// The answer as JSON: these tests read the fields the contract added for an
+/// unresolved damping by name, as a client does.
+fn answer(req: &RotorRequest) -> serde_json::Value {
+    serde_json::to_value(identify(req).unwrap()).unwrap()
+}
+
+fn num(v: &serde_json::Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no number {key}: {v}"))
+}
+
+/// Undamped, noise-free readings fitted ζ ≈ 1e-18 and answered an
+/// amplification factor of 2.4e13 as if measured (session 19). The damping is
+/// now reported as what it is: within its resolution of zero, the ratio an
+/// upper bound, the factor a lower bound, API 684's largest margin, a warning
+/// naming the mode; the critical speed is as exact as before.
+#[test]
+fn undamped_readings_give_a_damping_bound_and_a_warning_not_a_number() {
+    // 2450 rpm: no speed of the grid falls on the critical (an infinite response).
+    let rotor = Jeffcott::with(150.0, 2450.0, 0.0);
+    for options in [
+        RotorOptions::default(),
+        RotorOptions {
+            unbalance_angle: Some(UnbalanceAngle::AtWeight),
+            ..Default::default()
+        },
+    ] {
+        let s = session(&[rotor], &speeds(1200.0, 3600.0, 9), Unit::UmPp, 0.0, 0);
+        let out = answer(&RotorRequest {
+            session: s,
+            options: options.clone(),
+        });
+        let results = out["results"].as_array().unwrap();
+        assert_eq!(results.len(), 1, "{options:?}: {out}");
+        let r = &results[0];
+        assert!(rel(num(r, "critical_speed_rpm"), 2450.0) < 1e-7, "{out}");
+        assert_eq!(r["damping_ratio_bound"], "upper", "{out}");
+        assert_eq!(r["amplification_factor_bound"], "lower", "{out}");
+        let (zeta, resolution) = (num(r, "damping_ratio"), num(r, "damping_ratio_resolution"));
+        // The bound is the resolution (the fit is at zero), and far above rounding.
+        assert!(zeta > 0.0 && zeta <= 1.0001 * resolution, "{out}");
+        assert!(resolution > 1e-12 && resolution < 1e-4, "{out}");
+        assert!(
+            rel(num(r, "amplification_factor"), 1.0 / (2.0 * zeta)) < 1e-12,
+            "{out}"
+        );
+        assert_eq!(r["amplification_method"], "one_over_two_zeta", "{out}");
+        assert!(r.get("peak_speed_rpm").is_none(), "{out}");
+        // The critical (2450) is below service (3000): API 684's most is 16 %.
+        assert_eq!(num(r, "required_margin_pct"), 16.0, "{out}");
+        let warned: Vec<_> = out["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["code"] == "damping_unresolved")
+            .collect();
+        assert_eq!(warned.len(), 1, "{out}");
+        assert_eq!(warned[0]["plane"], "A", "{out}");
+        let message = warned[0]["message"].as_str().unwrap();
+        assert!(
+            message.contains("sensor '1H', plane 'A'") && message.contains("2450 rpm"),
+            "{message}"
+        );
+    }
+}
+
+/// With 2 % noise the fitted damping of an undamped rotor scatters about zero
+/// either side: a negative one answered `no_mode` and no result, a positive
+/// one an amplification factor in the thousands. Every seed now gives the
+/// mode, its critical within 0.5 %, and the damping as unresolved.
+#[test]
+fn noisy_undamped_readings_give_the_mode_with_its_damping_unresolved() {
+    let rotor = Jeffcott {
+        sensor_turn: -0.4,
+        ..Jeffcott::with(150.0, 2450.0, 0.0)
+    };
+    for seed in 1..=8 {
+        let s = session(
+            &[rotor],
+            &speeds(1200.0, 3600.0, 25),
+            Unit::UmPp,
+            0.02,
+            seed,
+        );
+        let out = answer(&RotorRequest {
+            session: s,
+            options: RotorOptions::default(),
+        });
+        let r = &out["results"][0];
+        assert!(r.is_object(), "seed {seed}: {out}");
+        assert!(
+            rel(num(r, "critical_speed_rpm"), 2450.0) < 0.005,
+            "seed {seed}: {out}"
+        );
+        assert_eq!(r["damping_ratio_bound"], "upper", "seed {seed}: {out}");
+        assert!(
+            out["warnings"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|w| w["code"] == "damping_unresolved"),
+            "seed {seed}: {out}"
+        );
+    }
+}
+
+/// The resolution is honest the other way too: a real damping of 1 % read
+/// with 2 % noise is resolved (no bound, no warning) and lies within the
+/// resolution of the fitted one, for every seed and with the forcing fitted
+/// or taken at the weight; noise-free, 0.2 % is resolved as well.
+#[test]
+fn a_real_damping_is_resolved_and_within_its_resolution_of_the_truth() {
+    let check = |zeta_true: f64, noise: f64, seed: u64, options: &RotorOptions| {
+        let rotor = Jeffcott::with(150.0, 2450.0, zeta_true);
+        let s = session(
+            &[rotor],
+            &speeds(1200.0, 3600.0, 25),
+            Unit::UmPp,
+            noise,
+            seed,
+        );
+        let out = answer(&RotorRequest {
+            session: s,
+            options: options.clone(),
+        });
+        let r = &out["results"][0];
+        assert!(r.get("damping_ratio_bound").is_none(), "{out}");
+        assert!(out.get("warnings").is_none(), "{out}");
+        let (zeta, resolution) = (num(r, "damping_ratio"), num(r, "damping_ratio_resolution"));
+        assert!(
+            (zeta - zeta_true).abs() < resolution && resolution < zeta_true / 5.0,
+            "seed {seed}: {out}"
+        );
+    };
+    for options in [
+        RotorOptions::default(),
+        RotorOptions {
+            unbalance_angle: Some(UnbalanceAngle::AtWeight),
+            ..Default::default()
+        },
+    ] {
+        for seed in 1..=8 {
+            check(0.01, 0.02, seed, &options);
+        }
+        check(0.002, 0.0, 0, &options);
+    }
+}

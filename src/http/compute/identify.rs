@@ -26,9 +26,9 @@ async fn blocking<T: Send + 'static>(
 #[utoipa::path(post, path = "/api/v1/identify/rotor", tag = "identification",
     request_body = RotorRequest,
     responses(
-        (status = 200, description = "Per sensor and plane: critical speed, damping ratio, API 684 amplification factor and separation margin", body = RotorIdentification),
+        (status = 200, description = "Per sensor and plane: critical speed, damping ratio and its resolution, API 684 amplification factor and separation margin; a damping ratio within its resolution of zero is given as an upper bound (`damping_ratio_bound`), the factor as a lower one, with a `damping_unresolved` warning", body = RotorIdentification),
         MalformedJson,
-        (status = 422, description = "Invalid session or options (a `speed_range_rpm` not `[lo, hi]` with lo < hi, each 1 to 1e6 rpm), too few speeds", body = ErrorBody),
+        (status = 422, description = "Invalid session or options (a `speed_range_rpm` not `[lo, hi]` with lo < hi, each 1 to 1e6 rpm; an empty `sensors` or `planes`, an unknown or repeated id in them), too few speeds", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn rotor(

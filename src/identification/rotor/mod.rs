@@ -15,9 +15,14 @@
 //! ([`super::ranges`] says why): a mass of 1e300 kg overflowed `√(cm)` and
 //! answered `no_mode` for a clean resonance. A `speed_range_rpm` must be
 //! `[lo, hi]`, `lo < hi`, each within [`super::ranges::SPEED_RPM`].
+//!
+//! A damping ratio within its resolution of zero (the readings cannot tell it
+//! from undamped) is reported as a bound with a `damping_unresolved` warning:
+//! see [`damping`].
 
 use nalgebra::DMatrix;
 use num_complex::Complex64;
+mod damping;
 mod wire;
 
 pub use wire::{
@@ -247,7 +252,9 @@ fn fit_one(
     })?;
     let label = format!("sensor '{}', plane '{}'", sensor.id, plane.id);
     let (wn, zeta) = (fit.natural_w(), fit.damping_ratio());
-    if !(wn.is_finite() && zeta.is_finite() && zeta > 0.0 && wn > 0.0) {
+    let resolution = damping::resolution(&fit, setup, &points);
+    let unresolved = resolution.is_some_and(|r| zeta.abs() < r);
+    if !(wn.is_finite() && zeta.is_finite() && wn > 0.0 && (zeta > 0.0 || unresolved)) {
         warn(out, "no_mode", &plane.id, format!("{label}: the fit has no damped critical speed (c/m = {:.4e}, b/m = {:.4e}); the data do not show a resonance of one mode", fit.c / fit.m, fit.b / fit.m));
         return Ok(());
     }
@@ -259,9 +266,15 @@ fn fit_one(
     let fit_rms = lsq::rms(measured.iter().zip(&fitted).map(|(m, f)| (m - f).norm()));
     let size = lsq::rms(measured.iter().map(|m| m.norm()));
     let fit_rms_relative = if size > 0.0 { fit_rms / size } else { 0.0 };
-    let amp = api684::amplification(|x| fit.response(x).norm(), wn, zeta);
     let to_rpm = 30.0 / std::f64::consts::PI;
     let critical = wn * to_rpm;
+    let damping = match resolution {
+        Some(r) if unresolved => {
+            warn(out, "damping_unresolved", &plane.id, format!("{label}: the mode at {critical:.0} rpm has a damping ratio the readings cannot tell from zero (fitted {zeta:.2e}, resolution {r:.2e}); the damping ratio given is the most they allow, the amplification factor the least, the required margin the most API 684 asks. Read more speeds close to the critical, or with less noise, to resolve it"));
+            damping::Damping::unresolved(zeta, r)
+        }
+        _ => damping::Damping::resolved(&fit, wn, zeta, resolution),
+    };
     let speeds: Vec<f64> = rows.iter().map(|&a| checked.rows[a].speed_rpm).collect();
     let (lo, hi) = speeds
         .iter()
@@ -285,12 +298,16 @@ fn fit_one(
         sensor: sensor.id.clone(),
         plane: plane.id.clone(),
         critical_speed_rpm: critical,
-        damping_ratio: zeta,
-        amplification_factor: amp.factor,
-        amplification_method: amp.method.name().into(),
-        peak_speed_rpm: amp.peak_w.map(|x| x * to_rpm),
+        damping_ratio: damping.ratio,
+        damping_ratio_resolution: damping.resolution,
+        damping_ratio_bound: damping.bounds.then(|| "upper".into()),
+        amplification_factor: damping.amplification.factor,
+        amplification_factor_bound: damping.bounds.then(|| "lower".into()),
+        amplification_method: damping.amplification.method.name().into(),
+        peak_speed_rpm: damping.amplification.peak_w.map(|x| x * to_rpm),
         separation_margin_pct: service.map(|n| api684::separation_margin_pct(critical, n)),
-        required_margin_pct: service.map(|n| api684::required_margin_pct(amp.factor, critical, n)),
+        required_margin_pct: service
+            .map(|n| api684::required_margin_pct(damping.margin_factor(), critical, n)),
         fit_rms,
         fit_rms_relative,
         speeds: rows.len(),

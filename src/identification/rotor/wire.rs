@@ -71,9 +71,22 @@ pub struct RotorResult {
     /// Undamped critical speed `√(c/m)`, rpm.
     pub critical_speed_rpm: f64,
     /// Of the forward mode at the critical: `(b − q/ω_n) / (2√(cm))` (`b/(2√(cm))` without cross-coupling).
+    /// With `damping_ratio_bound` `upper`, the most the readings allow instead.
     pub damping_ratio: f64,
+    /// The smallest damping ratio these readings tell from zero: twice the
+    /// standard deviation of the fitted one (absent when it cannot be had).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_ratio_resolution: Option<f64>,
+    /// `upper` when the fitted damping ratio is within its resolution of zero:
+    /// then `damping_ratio` is the most the readings allow, not an estimate.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_ratio_bound: Option<String>,
     /// API 684 amplification factor (see `amplification_method`).
     pub amplification_factor: f64,
+    /// `lower` when the damping is unresolved: `amplification_factor` is
+    /// `1/(2·damping_ratio)` of the upper bound, the least the readings allow.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub amplification_factor_bound: Option<String>,
     /// `half_power_bandwidth` (N_c/(N2 − N1) on the fitted displacement response) or `one_over_two_zeta`.
     pub amplification_method: String,
     /// Speed of the fitted response's peak, rpm.
@@ -110,7 +123,8 @@ pub struct RotorResult {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct RotorIdentification {
     pub results: Vec<RotorResult>,
-    /// `poor_fit` (several modes in range?), `critical_outside_range`, `no_mode`.
+    /// `poor_fit` (several modes in range?), `critical_outside_range`, `no_mode`,
+    /// `damping_unresolved` (a damping ratio within its resolution of zero).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Warning>,
 }

@@ -1,0 +1,85 @@
+//! How much of a mode's damping the readings resolve, and what is reported
+//! when they do not.
+//!
+//! The smallest damping ratio the readings tell from zero is taken as twice
+//! the standard deviation of the fitted one ([`Fit::damping_ratio_sd`]): the
+//! scatter of the responses about the fitted curve (the readings' noise, and
+//! whatever the one-mass model misses), carried to `ζ` through where the speeds
+//! lie (a speed near the critical says much about the damping, the far tails
+//! little). A fitted `ζ` within that of zero (either side: noise can make it
+//! negative) is not an estimate: undamped, noise-free readings fitted
+//! `ζ ≈ 1e-18` and answered an amplification factor of 2.4e13 (session 19).
+//! The relative noise is taken as at least [`NOISE_FLOOR`].
+//! Then the damping ratio reported is the most the readings allow,
+//! `max(ζ, 0) + resolution`, the amplification factor `1/(2·that)` the least,
+//! and the required margin API 684's largest (any factor above the bound is as
+//! consistent with the readings).
+
+use super::super::api684::{self, Amplification, Method};
+use super::super::onemass::{Fit, Point, Setup};
+
+/// Relative noise below this is taken as this. A smaller residual is rounding,
+/// not a measure of what the readings resolve: noise-free readings leave
+/// 1e-16, and with it undamped readings fitted ζ of ±1e-16 (an amplification
+/// factor of 1e15, or `no_mode` when the sign came out negative). A millionth
+/// is three decades finer than any vibration reading (a phase to 0.1° is 2e-3
+/// of the reading), so it never hides real noise, and ten decades above the
+/// rounding, so rounding never passes for resolution.
+pub const NOISE_FLOOR: f64 = 1e-6;
+
+/// Standard deviations in the resolution: about 95 % two-sided.
+pub const SIGMAS: f64 = 2.0;
+
+/// The resolution of `fit`'s damping ratio, when it can be had.
+pub fn resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<f64> {
+    let r = SIGMAS * fit.damping_ratio_sd(setup, points, NOISE_FLOOR);
+    r.is_finite().then_some(r)
+}
+
+/// The damping and amplification reported for one mode.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Damping {
+    pub ratio: f64,
+    pub resolution: Option<f64>,
+    pub amplification: Amplification,
+    /// The ratio is an upper bound and the factor a lower one.
+    pub bounds: bool,
+}
+
+impl Damping {
+    /// A resolved (or unresolvable-to-judge) damping: the fit's, API 684's
+    /// factor on the fitted curve.
+    pub fn resolved(fit: &Fit, wn: f64, zeta: f64, resolution: Option<f64>) -> Self {
+        Damping {
+            ratio: zeta,
+            resolution,
+            amplification: api684::amplification(|x| fit.response(x).norm(), wn, zeta),
+            bounds: false,
+        }
+    }
+
+    /// A damping ratio `zeta` within `resolution` of zero.
+    pub fn unresolved(zeta: f64, resolution: f64) -> Self {
+        let upper = zeta.max(0.0) + resolution;
+        Damping {
+            ratio: upper,
+            resolution: Some(resolution),
+            amplification: Amplification {
+                factor: 1.0 / (2.0 * upper),
+                peak_w: None,
+                method: Method::DampingRatio,
+            },
+            bounds: true,
+        }
+    }
+
+    /// The factor API 684's required margin is read for: with bounds any
+    /// factor above the lower one fits the readings, so the largest margin.
+    pub fn margin_factor(&self) -> f64 {
+        if self.bounds {
+            f64::INFINITY
+        } else {
+            self.amplification.factor
+        }
+    }
+}

@@ -3,9 +3,14 @@
 //! run, before anything else (so the influence coefficients, corrections, run
 //! checks and pooled coefficients all see compensated readings).
 //!
-//! The noise model of a reading stays relative to the compensated phasor (the
-//! one the solve uses); samples are compensated by the same constant, which
-//! leaves their scatter unchanged.
+//! The noise model of a reading is relative to the reading as measured, before
+//! compensation (`Checked::measured`): the instrument's repeatability
+//! (`amplitude_noise_pct`, `phase_noise_deg`) scales with what it read, so a
+//! reading that is mostly runout is no more precise for it (a reading equal to
+//! its runout once gave a 0 g correction within [0, 0] g). Samples are
+//! compensated by the same constant, which leaves their scatter unchanged.
+//! The runout vector itself is taken as exact (the contract gives it no
+//! noise).
 
 use num_complex::Complex64;
 

@@ -93,7 +93,10 @@ pub fn reading_covariances(checked: &Checked, noise: Noise) -> Vec<Vec<Matrix2<f
         .map(|a| {
             let mut row = Vec::with_capacity(runs);
             for k in 0..runs {
-                let y = checked.y[(a, k)];
+                // The noise is relative to the reading as measured, not as
+                // compensated for runout (a reading that is all runout is
+                // no more precise than any other).
+                let y = checked.measured(a, k);
                 let samples = if sampled {
                     checked.reading(a, k).samples.as_ref()
                 } else {

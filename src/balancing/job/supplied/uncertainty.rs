@@ -110,7 +110,7 @@ fn reference_covariances(fit: &Fit, noise: Noise) -> Vec<Matrix2<f64>> {
                     .collect()
             });
             reading_noise(
-                checked.y[(a, 0)],
+                checked.measured(a, 0),
                 samples.as_deref(),
                 noise.amplitude_pct,
                 noise.phase_deg,

@@ -24,7 +24,7 @@ pub(crate) use runs::{MAX_MASS_G, MIN_MASS_G};
 use crate::balancing::error::InputError;
 use crate::balancing::limits::{check_session, too_large, Limits};
 use crate::balancing::model::{Conventions, Reading, Session};
-use crate::balancing::phasor::weight_in;
+use crate::balancing::phasor::{reading_in, weight_in};
 
 /// Speeds closer than this (relative) are the same speed point (contract).
 pub const SPEED_TOLERANCE: f64 = 0.01;
@@ -93,6 +93,18 @@ impl Checked<'_> {
     /// The reading of run `k` (index into `self.runs`) for row `a`.
     pub fn reading(&self, a: usize, k: usize) -> &Reading {
         &self.session.runs[self.runs[k]].readings[self.reading_index(a, k)]
+    }
+
+    /// The reading of run `k` for row `a` as the instrument gave it (internal
+    /// frame), before its sensor's runout vector is subtracted: what the
+    /// readings' repeatability (`amplitude_noise_pct`, `phase_noise_deg`) is
+    /// relative to. `y[(a, k)]` itself where the session has no runout.
+    pub fn measured(&self, a: usize, k: usize) -> Complex64 {
+        if self.session.runout.is_none() {
+            return self.y[(a, k)];
+        }
+        let r = self.reading(a, k);
+        reading_in(self.conventions, r.amplitude, r.phase_deg)
     }
 }
 

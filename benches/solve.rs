@@ -50,6 +50,7 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
         id: "zero".into(),
         weights: vec![],
         readings: readings(&y0, &mut rng),
+        purpose: None,
     }];
     for j in 0..planes {
         let trial = rng.phasor(40.0);
@@ -63,6 +64,7 @@ fn job(planes: usize, sensors: usize, speeds: usize) -> Session {
                 angle_deg,
             }],
             readings: readings(&y, &mut rng),
+            purpose: None,
         });
     }
     let name = format!("bench {planes}x{sensors}x{speeds}");

@@ -19,7 +19,9 @@ use crate::balancing::model::{Rotor, Session};
 #[serde(deny_unknown_fields)]
 pub struct NewMachine {
     pub id: String,
-    pub name: String,
+    /// Optional: a machine may be known by its id alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rotor: Option<Rotor>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -33,7 +35,9 @@ crate::balancing::wire::objects_only!(NewMachine);
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct Machine {
     pub id: String,
-    pub name: String,
+    /// Absent for a machine stored without a name.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rotor: Option<Rotor>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -108,7 +112,8 @@ fn machine_from(r: &sqlx::any::AnyRow) -> Result<Machine, StoreError> {
     let rotor: Option<String> = r.get("rotor");
     Ok(Machine {
         id: r.get("id"),
-        name: r.get("name"),
+        // No name is kept as "" (the column is NOT NULL) and read back as none.
+        name: Some(r.get::<String, _>("name")).filter(|n| !n.is_empty()),
         rotor: rotor.map(|s| serde_json::from_str(&s)).transpose()?,
         notes: r.get("notes"),
         created_at: r.get("created_at"),
@@ -135,7 +140,7 @@ pub async fn create(
          RETURNING id, name, rotor, notes, created_at",
     )
     .bind(&m.id)
-    .bind(&m.name)
+    .bind(m.name.as_deref().unwrap_or(""))
     .bind(rotor)
     .bind(&m.notes)
     .fetch_optional(&mut *tx)

@@ -1,6 +1,6 @@
 //! The HTTP API against the real server: bad requests and their error bodies,
 //! machines and their coefficient versions, the OpenAPI document, runs of a
-//! stored session, the `fieldbal serve` binary, service behaviour (request ids,
+//! stored session, what a job and its runs are (`records`), the `fieldbal serve` binary, service behaviour (request ids,
 //! body limits, time limits) and sessions. `scripts/test.sh` runs this whole
 //! binary a second time with the server on PostgreSQL.
 
@@ -13,6 +13,7 @@ mod job_support;
 mod errors;
 mod machines;
 mod openapi;
+mod records;
 mod runs;
 mod serve;
 mod service;

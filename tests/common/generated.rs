@@ -58,5 +58,6 @@ pub fn session(
             .collect(),
         runs,
         runout: None,
+        trim: None,
     }
 }

@@ -92,6 +92,7 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
         id: "zero".into(),
         weights: vec![],
         readings: readings(&y0),
+        purpose: None,
     }];
     for r in 0..planes {
         let on: Vec<usize> = if kept { (0..=r).collect() } else { vec![r] };
@@ -103,6 +104,7 @@ fn session(rotor: &Rotor, conv: Conventions, kept: bool) -> Session {
             id: format!("trial {r}"),
             weights: on.iter().map(|&j| weight(j)).collect(),
             readings: readings(&(&y0 + &rotor.w * t)),
+            purpose: None,
         });
     }
     generated::session(

@@ -191,6 +191,7 @@ pub fn session_of(
             }],
         },
         readings: (0..y[0].len()).map(|a| reading(k, a)).collect(),
+        purpose: None,
     };
     let runs = (0..y.len()).map(run).collect();
     generated::session(name.into(), conv, trial.len(), None, sensors, runs)

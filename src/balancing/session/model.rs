@@ -185,6 +185,22 @@ pub struct Run {
     /// All weights on the rotor during the run; empty for the reference run.
     pub weights: Vec<Weight>,
     pub readings: Vec<Reading>,
+    /// What the run was taken for, as the client says (a trial or a check
+    /// run); stored and given back unchanged, not read by the solve. Never on
+    /// the reference run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub purpose: Option<RunPurpose>,
+}
+
+/// What a run with weights was taken for: names are the technician's to
+/// choose, so a client that must tell a check run from a trial says so here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RunPurpose {
+    /// A trial weight, to learn the influence coefficients.
+    Trial,
+    /// Weights fitted as a correction, run to check it.
+    Check,
 }
 
 /// A balancing session (`docs/session-format.md`).
@@ -205,6 +221,24 @@ pub struct Session {
     /// Slow-roll (runout) vectors, subtracted from every reading of their sensor (v2).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub runout: Option<Vec<Runout>>,
+    /// A trim job: the coefficients it is to be solved with, known before it
+    /// (stored and given back unchanged, not read by the solve).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trim: Option<Trim>,
+}
+
+/// The coefficients a trim job is to be solved with, instead of trial runs:
+/// exactly one of the two, each the shape of the solve option of its name.
+/// A record for whoever reopens the job; a solve uses coefficients only as
+/// its options give them.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(remote = "Self")]
+#[serde(deny_unknown_fields)]
+pub struct Trim {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coefficients_from: Option<CoefficientsFrom>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub influence_coefficients: Option<Vec<SuppliedCoefficient>>,
 }
 
 /// The slow-roll vector of a sensor (v2 "Runout"): in the sensor's unit and
@@ -346,6 +380,7 @@ objects_only!(
     Runout,
     SuppliedCoefficient,
     CoefficientsFrom,
+    Trim,
     RowWeight,
     SolveOptions,
     SolveRequest,

@@ -44,8 +44,14 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
             format!("ids are 1 to 64 characters; this one has {n}"),
         ));
     }
-    if m.name.trim().is_empty() || m.name.chars().count() > 200 {
-        return Err(invalid("name", "a name of 1 to 200 characters"));
+    if m.name
+        .as_ref()
+        .is_some_and(|x| x.trim().is_empty() || x.chars().count() > 200)
+    {
+        return Err(invalid(
+            "name",
+            "a name of 1 to 200 characters, or no name at all",
+        ));
     }
     if m.notes.as_ref().is_some_and(|x| x.chars().count() > 10_000) {
         return Err(invalid("notes", "at most 10000 characters"));

@@ -11,6 +11,7 @@
 mod fields;
 mod pairing;
 mod runs;
+mod trim;
 
 use std::collections::HashMap;
 
@@ -115,11 +116,15 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     check_session(session, &limits)?;
     let conventions = session.conventions.unwrap_or_default();
     let (planes, sensors) = fields::check_setup(session)?;
+    if let Some(t) = &session.trim {
+        trim::check_trim(t, &planes, &sensors)?;
+    }
     // Runout vectors (v2), subtracted from the readings when pairing.
     let runout = crate::balancing::job::runout::vectors(session, conventions)?;
     fields::unique_ids("runs", session.runs.iter().map(|r| r.id.as_str()))?;
 
     let found = runs::check_runs(session, &planes, &sensors)?;
+    trim::check_purposes(session)?;
     let reference = found.reference;
     let ref_run = &session.runs[reference];
     let points = pairing::cluster_speeds(ref_run.readings.iter().map(|r| r.speed_rpm).collect());

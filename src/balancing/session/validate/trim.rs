@@ -1,0 +1,95 @@
+//! A trim job's `trim` (the coefficients it is to be solved with) and each
+//! run's `purpose`: records for the client that reopens a job, stored and
+//! given back unchanged, so checked only for what would make them mean nothing.
+
+use super::fields::{check_angle, check_positive, invalid};
+use super::IdIndex;
+use crate::balancing::error::InputError;
+use crate::balancing::model::{Session, Trim};
+
+/// Largest supplied coefficient, sensor unit per gram (as the solve option's).
+const MAX_COEFFICIENT: f64 = 1e15;
+
+/// Exactly one source of coefficients, naming a machine or listing known
+/// planes' and sensors' coefficients.
+pub(super) fn check_trim(
+    trim: &Trim,
+    planes: &IdIndex<'_>,
+    sensors: &IdIndex<'_>,
+) -> Result<(), InputError> {
+    match (&trim.coefficients_from, &trim.influence_coefficients) {
+        (Some(from), None) => {
+            let n = from.machine.chars().count();
+            if n == 0 || n > 64 {
+                return Err(invalid(
+                    "trim.coefficients_from.machine",
+                    format!("a machine id of 1 to 64 characters; this one has {n}"),
+                ));
+            }
+            if from.version.is_some_and(|v| v < 1) {
+                return Err(invalid(
+                    "trim.coefficients_from.version",
+                    "coefficient versions count from 1",
+                ));
+            }
+            Ok(())
+        }
+        (None, Some(list)) => {
+            if list.is_empty() {
+                return Err(invalid(
+                    "trim.influence_coefficients",
+                    "list the coefficients, or leave trim out",
+                ));
+            }
+            for (k, c) in list.iter().enumerate() {
+                let f = |what: &str| format!("trim.influence_coefficients[{k}].{what}");
+                if !planes.contains_key(c.plane.as_str()) {
+                    return Err(invalid(
+                        f("plane"),
+                        format!("no plane has the id '{}'", c.plane),
+                    ));
+                }
+                if !sensors.contains_key(c.sensor.as_str()) {
+                    return Err(invalid(
+                        f("sensor"),
+                        format!("no sensor has the id '{}'", c.sensor),
+                    ));
+                }
+                check_positive(
+                    || f("speed_rpm"),
+                    c.speed_rpm,
+                    super::MAX_SPEED_RPM,
+                    false,
+                    "the speed",
+                )?;
+                check_positive(
+                    || f("amplitude_per_g"),
+                    c.amplitude_per_g,
+                    MAX_COEFFICIENT,
+                    true,
+                    "the coefficient",
+                )?;
+                check_angle(|| f("phase_deg"), c.phase_deg)?;
+            }
+            Ok(())
+        }
+        _ => Err(invalid(
+            "trim",
+            "give either coefficients_from or influence_coefficients",
+        )),
+    }
+}
+
+/// A `purpose` only on runs with weights: the reference run is neither a
+/// trial nor a check.
+pub(super) fn check_purposes(session: &Session) -> Result<(), InputError> {
+    for (i, run) in session.runs.iter().enumerate() {
+        if run.purpose.is_some() && run.weights.is_empty() {
+            return Err(invalid(
+                format!("runs[{i}].purpose"),
+                format!("run '{}' has no weights: it is the reference run (the rotor as found), neither a trial nor a check; leave purpose out, or list the weights on the rotor during it", run.id),
+            ));
+        }
+    }
+    Ok(())
+}

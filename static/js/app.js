@@ -102,7 +102,7 @@ function startJob(setup, coefficientsFrom) {
   forget();
   resetJob();
   state.setup = setup;
-  state.options.coefficientsFrom = coefficientsFrom || null;
+  state.setup.trim = coefficientsFrom ? { coefficients_from: coefficientsFrom } : null;
   show("setup");
 }
 
@@ -156,11 +156,13 @@ async function loadLastSolution() {
     const stored = await api.solutions(state.id);
     const last = Array.isArray(stored) && stored.length ? stored[stored.length - 1] : null;
     if (!last || !last.solution) return;
-    // A trim from a machine's stored coefficients is said by its solutions
-    // only: the option lived in one browser's local storage, so the job
-    // reopened elsewhere asked for trial runs and could not be solved again.
-    const from = last.solution.coefficients_from;
-    if (from && from.machine && !state.options.coefficientsFrom) state.options.coefficientsFrom = { machine: from.machine };
+    // A trim job stored before sessions recorded their `trim` is known by
+    // the options of its last solve: stored (`coefficients_from`) or
+    // supplied (`influence_coefficients`) coefficients, to solve with again.
+    const o = last.options || {};
+    const from = o.coefficients_from || last.solution.coefficients_from;
+    if (!state.setup.trim && from && from.machine) state.setup.trim = { coefficients_from: { machine: from.machine } };
+    else if (!state.setup.trim && Array.isArray(o.influence_coefficients) && o.influence_coefficients.length) state.setup.trim = { influence_coefficients: o.influence_coefficients };
     const used = (last.runs || []).map((r) => r.run_id).sort().join("\n");
     const now = state.runs.map((r) => r.id).sort().join("\n");
     if (used === now) {

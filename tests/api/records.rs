@@ -67,6 +67,10 @@ async fn run_purposes_and_a_trim_are_stored_and_given_back_unchanged() {
     .await;
     assert_eq!(status, 200, "{without}");
     assert_eq!(with["solution"]["corrections"], without["corrections"]);
+    // A trim from a check run's state: that run is the rebased reference.
+    let (status, _, trim) = post(&client, &url, &json!({"from_run": "check 2"})).await;
+    assert_eq!(status, 201, "{trim}");
+    assert_eq!(trim["solution"]["from_run"], "check 2");
 
     // Supplied coefficients are a trim too.
     let mut supplied = session.clone();

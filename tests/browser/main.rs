@@ -1,6 +1,7 @@
 //! End-to-end tests of the web form in Debian's headless Chromium, typed key
 //! by key: errors at their field, exports, the form, imported sessions, a
-//! whole job at the stand, what a new user met (`newuser`), and bearer tokens. `harness/` starts and drives the
+//! whole job at the stand, what a new user met (`newuser`), a job reopened elsewhere and
+//! one typed from the keyboard alone (`reopened`), and bearer tokens. `harness/` starts and drives the
 //! browser (one at a time in this binary, see `harness::Browser::start`);
 //! `scenes/` holds the longer scenes the tests go through. Screenshots go to
 //! `target/screenshots/`.
@@ -16,4 +17,5 @@ mod form;
 mod import;
 mod job;
 mod newuser;
+mod reopened;
 mod token;

@@ -139,6 +139,9 @@ pub fn rebase(session: &Session, r: usize) -> Session {
     for (i, run) in out.runs.iter_mut().enumerate() {
         if i == r {
             run.weights.clear();
+            // Now the reference run: neither a trial nor a check (a purpose
+            // on it would be refused by the rebased session's check).
+            run.purpose = None;
         } else {
             run.weights.extend(off.iter().cloned());
         }

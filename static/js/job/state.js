@@ -33,6 +33,9 @@ export function emptySetup() {
     sensors: [{ id: "", unit: "um_pp", label: "" }],
     speeds: [],
     rotor: null,
+    // A trim job: the coefficients it is solved with instead of trial runs,
+    // `{coefficients_from}` or `{influence_coefficients}` (the session's `trim`).
+    trim: null,
   };
 }
 
@@ -96,11 +99,14 @@ export function setupJson(setup = state.setup) {
     if (setup.rotor.balance_grade) out.rotor.balance_grade = setup.rotor.balance_grade;
   }
   if (setup.runout && setup.runout.length) out.runout = setup.runout;
+  // Stored with the session, so that the job reopened in another browser,
+  // before it is solved, is still a trim job (it asked for trial runs).
+  if (setup.trim) out.trim = JSON.parse(JSON.stringify(setup.trim));
   return out;
 }
 
 export function runJson(run) {
-  return {
+  const out = {
     id: run.id,
     weights: run.weights.map((w) => ({ plane: w.plane, mass_g: w.mass_g, angle_deg: w.angle_deg })),
     readings: run.readings.map((r) => {
@@ -109,6 +115,9 @@ export function runJson(run) {
       return reading;
     }),
   };
+  // "trial" or "check": what the run is, whatever the technician named it.
+  if (run.purpose && run.weights.length) out.purpose = run.purpose;
+  return out;
 }
 
 /** The whole session in the contract's shape, stored runs only unless `all`. */
@@ -137,6 +146,7 @@ export function setupOf(session) {
     speeds,
     rotor: session.rotor || null,
     runout: session.runout,
+    trim: session.trim || null,
   };
 }
 
@@ -154,6 +164,13 @@ export function copySetup() {
   const s = JSON.parse(JSON.stringify(state.setup));
   s.name = "";
   return s;
+}
+
+/** The trim job's coefficients in words, or "" for a job with trial runs. */
+export function trimWords(trim = state.setup.trim) {
+  if (!trim) return "";
+  if (trim.coefficients_from) return `the stored coefficients of machine ${trim.coefficients_from.machine}`;
+  return `the ${trim.influence_coefficients.length} supplied influence coefficient${trim.influence_coefficients.length === 1 ? "" : "s"}`;
 }
 
 /** Planes that a stored run has already put a weight in: plane → the first such run's name. */

@@ -12,9 +12,10 @@ import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
 
 /**
- * A machine's name, or "" when it has none: the service asks for a name, so
- * the form stores the id as the name when none is typed, and the id was then
- * shown twice ("Machine ID-FAN-3 · ID-FAN-3", and again in the list's Name column).
+ * A machine's name, or "" when it has none. A machine is stored without a
+ * name when none is typed; one stored earlier with its id as its name (the
+ * form did so) has none either: the id was shown twice ("Machine ID-FAN-3 ·
+ * ID-FAN-3", and again in the list's Name column).
  */
 const nameOf = (m) => (m.name && m.name.trim() !== m.id ? m.name : "");
 
@@ -68,6 +69,8 @@ async function setupOfLatest(machine) {
   const setup = setupOf(unwrapSession(data));
   setup.name = "";
   setup.machine = machine.id;
+  // The new job is a trim job only if asked for (startJob): not because the last one was.
+  setup.trim = null;
   if (!setup.rotor && machine.rotor) setup.rotor = machine.rotor;
   return setup;
 }
@@ -125,7 +128,9 @@ function newMachineForm(root, go) {
     h("button", { type: "button", class: "create-machine", onclick: async () => {
       clearMarks(root);
       if (!m.id) return banner(root, "error", "Give the machine an id (the name on its plate, e.g. ID-FAN-3).");
-      const body = { id: m.id, name: m.name || m.id };
+      // No name typed: none stored (the id is not a name).
+      const body = { id: m.id };
+      if (m.name) body.name = m.name;
       // Mass and speed were sent without the grade the service requires (every
       // such machine was refused), and one of them alone was dropped unsaid.
       const rotor = { mass_kg: m.mass, service_speed_rpm: m.speed, balance_grade: m.grade };

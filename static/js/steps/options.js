@@ -13,31 +13,37 @@ export function runsWithWeights() {
 }
 
 /**
- * Check runs, whatever they are named: stored runs with weights recorded once
- * every plane has had its trial (every such run, in a trim from stored
- * coefficients), and any run named "check…".
+ * What each stored run with weights is, "trial" or "check": its `purpose`,
+ * which the form stores with every run (names are the technician's: a check
+ * run renamed "trial…" was counted as a trial). A run stored without one
+ * (by another client, or before the form stored it) is guessed from the
+ * order and the name as before: a check run is recorded once every plane has
+ * had its trial (every run, in a trim job) or is named "check…", except that
+ * one named "trial…" stays a trial (a second trial in a tried plane).
  */
-export function checkRuns() {
+export function runKinds() {
   const planes = state.setup.planes.map((p) => p.id);
   const tried = new Set();
-  return runsWithWeights().filter((r) => {
-    const after = state.options.coefficientsFrom || planes.every((p) => tried.has(p));
+  const out = new Map();
+  for (const r of runsWithWeights()) {
+    const after = !!state.setup.trim || planes.every((p) => tried.has(p));
     r.weights.forEach((w) => tried.add(w.plane));
-    return after || /^check/i.test(r.id);
-  });
+    const guess = /^check/i.test(r.id) || (after && !/^trial/i.test(r.id)) ? "check" : "trial";
+    out.set(r.id, r.purpose === "trial" || r.purpose === "check" ? r.purpose : guess);
+  }
+  return out;
 }
 
-/**
- * Trial runs so far: runs with weights that are no check runs. Check runs are
- * known as checkRuns() above knows them (named "check…", as the form
- * names them, or stored after every plane's trial), except that a run the
- * technician named "trial…" stays a trial (a second trial in a tried plane).
- * Every run with weights was counted, so after a check run the next trial
- * was proposed as "trial 4" in a two-plane job.
- */
+/** Check runs, whatever they are named (see runKinds). */
+export function checkRuns() {
+  const kinds = runKinds();
+  return runsWithWeights().filter((r) => kinds.get(r.id) === "check");
+}
+
+/** Trial runs so far, whatever they are named (see runKinds). */
 export function trialCount() {
-  const checks = new Set(checkRuns().filter((r) => !/^trial/i.test(r.id)).map((r) => r.id));
-  return state.runs.filter((r) => r.weights.length > 0 && !checks.has(r.id) && !/^check/i.test(r.id)).length;
+  const kinds = runKinds();
+  return runsWithWeights().filter((r) => kinds.get(r.id) === "trial").length;
 }
 
 /** The run a trim starts from by default: the last check run, if one is stored after the trials. */
@@ -61,7 +67,10 @@ export function solveOptions() {
   if (o.phaseNoise) out.phase_noise_deg = o.phaseNoise;
   const from = o.fromRun === undefined || o.fromRun === null ? defaultFromRun() : o.fromRun;
   if (from && state.runs.some((r) => r.id === from)) out.from_run = from;
-  if (o.coefficientsFrom) out.coefficients_from = o.coefficientsFrom;
+  // A trim job is solved with its coefficients (the session's `trim`).
+  const trim = state.setup.trim;
+  if (trim && trim.coefficients_from) out.coefficients_from = trim.coefficients_from;
+  else if (trim && trim.influence_coefficients) out.influence_coefficients = trim.influence_coefficients;
   if (o.discrete !== false && state.setup.planes.some((p) => p.kit && p.kit.masses_g && p.kit.masses_g.length) &&
       state.setup.planes.every((p) => p.kit && p.kit.masses_g && p.kit.masses_g.length)) out.discrete = true;
   return out;

@@ -7,10 +7,16 @@ import { h, replace, $ } from "../page/dom.js";
 import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark, keepFocus } from "../page/fields.js";
 import { fmt, fmtReading, unitLabel, DECIMAL_RULE } from "../page/num.js";
 import { api, ApiError } from "../job/api.js";
-import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes } from "../job/state.js";
+import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes, trimWords } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
-import { trialCount } from "./options.js";
+import { trialCount, runKinds } from "./options.js";
+
+/** What a run with weights can be (its `purpose`). */
+const PURPOSES = [
+  ["trial", "a trial run (a trial weight)"],
+  ["check", "a check run (corrections fitted)"],
+];
 
 function angleWords() {
   return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
@@ -34,12 +40,20 @@ function freeName(base) {
   for (let n = 2; ; n++) if (!taken.has(`${base} ${n}`)) return `${base} ${n}`;
 }
 
+/** "trial n", or the next number free when a run (a check run renamed) has that name. */
+function trialName(n) {
+  const taken = new Set(state.runs.map((r) => r.id));
+  while (taken.has(`trial ${n}`)) n++;
+  return `trial ${n}`;
+}
+
 /**
- * Start typing a new run: the zero run first, then trial runs. A check run
- * lists every weight on the rotor (`weights`, relative to the zero run);
- * `fromRun` names the run whose state it was trimmed from.
+ * Start typing a new run: the zero run first, then trial runs (check runs in
+ * a trim job, which needs no trials). A check run lists every weight on the
+ * rotor (`weights`, relative to the zero run); `fromRun` names the run whose
+ * state it was trimmed from. The run is stored with its kind as `purpose`.
  */
-export function newDraft(kind = "trial", weights = null, fromRun = null) {
+export function newDraft(kind = state.setup.trim ? "check" : "trial", weights = null, fromRun = null) {
   const isZero = !referenceRun();
   const trials = trialCount();
   const planes = state.setup.planes;
@@ -48,7 +62,7 @@ export function newDraft(kind = "trial", weights = null, fromRun = null) {
     : weights || [{ plane: planes[Math.min(trials, planes.length - 1)].id, mass_g: null, angle_deg: null }];
   state.draft = {
     index: null,
-    id: isZero ? "zero" : kind === "check" ? freeName("check") : freeName(`trial ${trials + 1}`),
+    id: isZero ? "zero" : kind === "check" ? freeName("check") : trialName(trials + 1),
     zero: isZero,
     check: kind === "check" && !isZero,
     fromRun,
@@ -73,6 +87,8 @@ async function editDraft(index) {
     etag,
     id: run.id,
     zero: run.weights.length === 0,
+    // Corrected, the run stays what it is (its purpose is stored again).
+    check: runKinds().get(run.id) === "check",
     weights: run.weights.map((w) => ({ ...w })),
     carry: false,
     rows: rows(),
@@ -88,7 +104,7 @@ function draftRun() {
   const d = state.draft;
   const prev = previousTrial();
   const carried = d.carry && prev ? prev.weights : [];
-  return {
+  const run = {
     id: d.id,
     weights: [...carried, ...d.weights].map((w) => ({ plane: w.plane, mass_g: w.mass_g, angle_deg: w.angle_deg })),
     readings: rows().map((row, i) => {
@@ -98,6 +114,9 @@ function draftRun() {
       return reading;
     }),
   };
+  // What the run is, kept with it whatever it is named (the zero run is neither).
+  if (!d.zero) run.purpose = d.check ? "check" : "trial";
+  return run;
 }
 
 /** Position of the draft among the runs, for field paths like `runs[2].readings[5].phase_deg`. */
@@ -213,12 +232,14 @@ function grid(rerender) {
   if (d && d.index === null) columns.push({ run: null, i: k, editing: true });
   const phaseWords = state.setup.conventions.phase === "lead" ? "(lead)" : "(lag)";
   const sensorsById = new Map(state.setup.sensors.map((x) => [x.id, x]));
+  const kinds = runKinds();
   return h("div", { class: "scroll grid-wrap" }, h("table", { class: "grid" },
     h("thead", {},
       h("tr", {}, h("th", { rowspan: 2 }, "Speed, rpm"), h("th", { rowspan: 2 }, "Sensor"),
         columns.map((c) => h("th", { colspan: 2, class: c.editing ? "run editing" : "run", dataset: { run: c.editing ? d.id || "" : c.run.id } },
           h("div", { class: "run-name" }, c.editing ? d.id || "(new run)" : c.run.id),
           h("div", { class: "run-weights" }, c.editing ? (d.zero ? "no weights (as found)" : "being typed") : weightsText(c.run.weights)),
+          !c.editing && c.run.weights.length ? h("div", { class: "run-kind" }, kinds.get(c.run.id) === "check" ? "check run" : "trial run") : "",
           !d && c.run && c.run.stored ? h("button", { type: "button", class: "small correct", onclick: async () => { await editDraft(c.i); rerender(); } }, "Correct") : ""))),
       h("tr", {}, columns.map(() => [h("th", { class: "sub" }, "Amplitude"), h("th", { class: "sub" }, `Phase, ° ${phaseWords}`)]))),
     h("tbody", {}, rows().map((row, r) => h("tr", {},
@@ -270,14 +291,16 @@ export function renderRuns(root, solve) {
     h("p", { class: "lead" }, d && d.zero && d.index === null
       ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell, Enter stores the run."
       : d && d.check
-        ? "Check run: fit the corrections below, take every trial weight off, run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
-        : state.options.coefficientsFrom && referenceRun()
-          ? `Trim job from the stored coefficients of machine ${state.options.coefficientsFrom.machine}: no trial runs are needed. Solve now.`
+        ? "Check run: with every trial weight off and the corrections fitted (the weights below), run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
+        : state.setup.trim && referenceRun()
+          ? `Trim job from ${trimWords()}: no trial runs are needed. Solve now.`
           : tried < planes
             ? `Trial runs: one per plane at least (${tried} of ${planes} plane${planes === 1 ? "" : "s"} tried). List every weight that is on the rotor during the run.`
             : `Every plane has had its trial weight (${tried} of ${planes}). Solve, or add a run: list every weight that is on the rotor during it.`),
     d ? h("div", { class: "draft" },
       h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => { d.id = v; const head = $("th.run.editing .run-name", root); if (head) head.textContent = v || "(new run)"; } })),
+      // What the run is, stored with it: the name may be anything.
+      d.zero ? "" : h("label", { class: "run-purpose" }, h("span", {}, "This run is"), selectInput({ field: `runs[${k}].purpose`, value: d.check ? "check" : "trial", choices: PURPOSES, label: "This run is", onValue: (v) => { d.check = v === "check"; rerender(); } })),
       d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
     d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
     d ? h("p", { class: "hint csv-shapes" }, CSV_SHAPES) : "",
@@ -288,8 +311,8 @@ export function renderRuns(root, solve) {
           d.index !== null ? "Store the corrected run" : d.zero ? "Store zero run" : "Store run"),
         state.runs.some((r) => r.stored) ? h("button", { type: "button", class: "cancel", onclick: () => { state.draft = null; rerender(); } }, "Cancel") : "",
       ] : [
-        h("button", { type: "button", class: "add-trial", onclick: () => { newDraft(); rerender(); $(`[data-field="runs[${state.runs.length}].weights[0].mass_g"]`, root)?.focus(); } }, "+ Add trial run"),
-        h("button", { type: "button", class: "primary go-solve", disabled: tried < planes && !state.options.coefficientsFrom, onclick: solve }, "Solve →"),
+        h("button", { type: "button", class: "add-trial", onclick: () => { newDraft(); rerender(); $(`[data-field="runs[${state.runs.length}].weights[0].mass_g"]`, root)?.focus(); } }, state.setup.trim ? "+ Add a run" : "+ Add trial run"),
+        h("button", { type: "button", class: "primary go-solve", disabled: tried < planes && !state.setup.trim, onclick: solve }, "Solve →"),
       ],
     ),
   );

@@ -16,7 +16,7 @@ import { api, unwrapSession } from "./job/api.js";
 import { state, onChange, resetJob, loadSession } from "./job/state.js";
 import { keep, keepNow, kept, forget } from "./job/keep.js";
 import { renderSetup } from "./steps/setup.js";
-import { renderRuns, newDraft } from "./steps/runs.js";
+import { renderRuns, newDraft, firstEmptyField } from "./steps/runs.js";
 import { renderSolve } from "./steps/solve.js";
 import { renderReport } from "./steps/report.js";
 import { renderSessions } from "./steps/sessions.js";
@@ -74,6 +74,25 @@ function show(step, push = true) {
   else history.replaceState({ step }, "", hash);
   keepNow(step);
   window.scrollTo(0, 0);
+  if (push) focusStep(step);
+}
+
+/**
+ * Put the focus in the step just shown, where the technician goes on: the
+ * first field still empty of the run being typed (the zero run's first cell,
+ * a check run's first cell), a new job's name, else the step's heading. The
+ * focus was left on the page's body, and Tab started again from the tabs.
+ */
+function focusStep(step) {
+  const root = $(`#step-${step}`);
+  if (root.contains(document.activeElement)) return;
+  const name = $('[data-field="name"]:not(:disabled)', root);
+  const target = step === "runs" ? firstEmptyField(root) : step === "setup" && name && name.value === "" ? name : null;
+  if (target) return target.focus();
+  const heading = $("h2", root);
+  if (!heading) return;
+  heading.tabIndex = -1;
+  heading.focus({ preventScroll: true });
 }
 
 function showMachine(id) {

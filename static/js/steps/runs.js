@@ -12,10 +12,16 @@ import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
 import { trialCount, runKinds } from "./options.js";
 
+/** What the last stored run is: "trial", "check", or undefined for the zero run. */
+function lastKind() {
+  const last = state.runs[state.runs.length - 1];
+  return last && last.stored ? runKinds().get(last.id) : undefined;
+}
+
 /** What a run with weights can be (its `purpose`). */
 const PURPOSES = [
-  ["trial", "a trial run (a trial weight)"],
-  ["check", "a check run (corrections fitted)"],
+  ["trial", "a trial run"],
+  ["check", "a check run"],
 ];
 
 function angleWords() {
@@ -197,6 +203,19 @@ async function store(root, rerender) {
   state.draft = null;
   state.solution = null;
   changed();
+  // On to what comes next (the focus was left on the page's body, and Tab
+  // started again from the top): another trial while a plane is untried,
+  // else Solve.
+  ($("button.go-solve:not(:disabled)", root) || $("button.add-trial", root))?.focus();
+}
+
+/**
+ * The run being typed's first empty field, in the order Tab walks them: the
+ * weights, then the cells (the run name is filled in already); null when
+ * every one is filled.
+ */
+export function firstEmptyField(root) {
+  return [...root.querySelectorAll(".draft .weights input.num, td.cell input")].find((e) => !e.disabled && e.value.trim() === "") || null;
 }
 
 function weightsEditor(d, k, rerender) {
@@ -206,7 +225,9 @@ function weightsEditor(d, k, rerender) {
     "div",
     { class: "weights" },
     h("h4", {}, `Weights on the rotor for this run (angles ${angleWords()})`),
-    prev && d.index === null
+    // A check run lists every weight on the rotor (the trial weights are
+    // off): "still on" asked whether to add the last trial's weights to it.
+    prev && d.index === null && !d.check
       ? h("label", { class: "carry" },
           h("input", { type: "checkbox", class: "carry-tick", checked: d.carry, onchange: (e) => { d.carry = e.target.checked; rerender(); } }),
           ` Weights of “${prev.id}” are still on the rotor`,
@@ -292,15 +313,25 @@ export function renderRuns(root, solve) {
       ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell, Enter stores the run."
       : d && d.check
         ? "Check run: with every trial weight off and the corrections fitted (the weights below), run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
+        : !d && lastKind() === "check"
+          ? `Check run “${state.runs[state.runs.length - 1].id}” stored: solve again, and the answer says what remains and what to add to the rotor as it is in this run.${state.setup.trim ? "" : ` Every plane has had its trial weight (${tried} of ${planes}).`}`
         : state.setup.trim && referenceRun()
           ? `Trim job from ${trimWords()}: no trial runs are needed. Solve now.`
           : tried < planes
             ? `Trial runs: one per plane at least (${tried} of ${planes} plane${planes === 1 ? "" : "s"} tried). List every weight that is on the rotor during the run.`
             : `Every plane has had its trial weight (${tried} of ${planes}). Solve, or add a run: list every weight that is on the rotor during it.`),
-    d ? h("div", { class: "draft" },
-      h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => { d.id = v; const head = $("th.run.editing .run-name", root); if (head) head.textContent = v || "(new run)"; } })),
+    d ? h("div", { class: "draft", onkeydown: (e) => {
+      // Enter in the run name or a weight goes on to the first field still
+      // empty (the readings), or stores the run when all are typed; it did nothing.
+      if (e.key !== "Enter" || !e.target.matches("input[type=text]")) return;
+      e.preventDefault();
+      const next = firstEmptyField(root);
+      if (next) next.focus();
+      else store(root, rerender);
+    } },
+      h("div", { class: "run-head" }, h("label", { class: "run-id" }, h("span", {}, "Run name"), textInput({ field: `runs[${k}].id`, value: d.id, required: true, label: "Run name", size: 18, maxlength: 64, onValue: (v) => { d.id = v; const head = $("th.run.editing .run-name", root); if (head) head.textContent = v || "(new run)"; } })),
       // What the run is, stored with it: the name may be anything.
-      d.zero ? "" : h("label", { class: "run-purpose" }, h("span", {}, "This run is"), selectInput({ field: `runs[${k}].purpose`, value: d.check ? "check" : "trial", choices: PURPOSES, label: "This run is", onValue: (v) => { d.check = v === "check"; rerender(); } })),
+      d.zero ? "" : h("label", { class: "run-purpose" }, h("span", {}, "This run is"), selectInput({ field: `runs[${k}].purpose`, value: d.check ? "check" : "trial", choices: PURPOSES, label: "This run is", onValue: (v) => { d.check = v === "check"; if (d.check) d.carry = false; rerender(); } }))),
       d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
     d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
     d ? h("p", { class: "hint csv-shapes" }, CSV_SHAPES) : "",

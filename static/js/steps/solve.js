@@ -159,6 +159,9 @@ async function solve(root, rerender) {
   }
   changed();
   rerender();
+  // The answer is drawn afresh: keep the technician's place (the focus was
+  // left on the page's body), Tab goes on into the answer.
+  root.querySelector("button.solve")?.focus();
 }
 
 /** Render the solve step; `checkRun(weights, fromRun)` starts a check run with those weights on. */

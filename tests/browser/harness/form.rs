@@ -186,8 +186,18 @@ pub fn cells(session: &Value, run: &Value) -> Vec<String> {
 /// Click the first cell of run `k`, then type every value followed by Tab:
 /// this only fills the right cells if Tab walks the grid in reading order.
 pub async fn type_cells_with_tab(b: &Browser, k: usize, values: &[String]) {
-    b.click(&field(&format!("runs[{k}].readings[0].amplitude")))
-        .await;
+    let first = field(&format!("runs[{k}].readings[0].amplitude"));
+    // Into the middle of the window first, as a technician scrolls to it: a
+    // tall run (its name, what it is, the weights) leaves the first cell
+    // below the sticky Store bar, and WebDriver clicks a cell in the window
+    // where it is, under the bar.
+    b.wait_for(&first).await;
+    let script = format!(
+        "document.querySelector({}).scrollIntoView({{ block: 'center' }})",
+        serde_json::to_string(&first).unwrap()
+    );
+    b.client.execute(&script, vec![]).await.expect("scrolls");
+    b.click(&first).await;
     for value in values {
         let active = b.client.active_element().await.expect("a focused cell");
         active

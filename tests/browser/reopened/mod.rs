@@ -5,6 +5,8 @@
 //! a whole job at a narrow window with the keyboard alone (`keyboard`).
 
 mod check;
+mod keyboard;
+mod keys;
 mod machine;
 mod trim;
 
@@ -23,6 +25,8 @@ async fn a_reopened_job_is_what_it_was_and_a_job_runs_from_the_keyboard() {
     check::a_check_run_named_trial_stays_a_check_run_when_reopened(&stand).await;
     stand.renew().await;
     machine::a_machine_without_a_name_is_stored_without_one(&stand).await;
+    stand.renew().await;
+    keyboard::a_whole_job_at_1024_by_768_with_the_keyboard_alone(&stand).await;
     stand.stop().await;
 }
 

@@ -172,8 +172,16 @@ async function open(id, step = "runs", push = true) {
  */
 async function loadLastSolution() {
   try {
-    const stored = await api.solutions(state.id);
-    const last = Array.isArray(stored) && stored.length ? stored[stored.length - 1] : null;
+    // The list is paged, oldest first (20 a page unless asked): the last of
+    // the first page was taken, so a job solved more than 20 times reopened
+    // with its 20th solution, or with none when runs came after it.
+    let last = null;
+    for (let offset = 0; ; offset += 100) {
+      const page = await api.solutions(state.id, 100, offset);
+      if (!Array.isArray(page) || !page.length) break;
+      last = page[page.length - 1];
+      if (page.length < 100) break;
+    }
     if (!last || !last.solution) return;
     // A trim job stored before sessions recorded their `trim` is known by
     // the options of its last solve: stored (`coefficients_from`) or

@@ -69,7 +69,7 @@ export const api = {
   deleteSession: (id) => call("DELETE", `/sessions/${encodeURIComponent(id)}`),
   addRun: (id, run) => call("POST", `/sessions/${encodeURIComponent(id)}/runs`, run),
   putRun: (id, runId, run) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run),
-  solutions: (id) => call("GET", `/sessions/${encodeURIComponent(id)}/solutions`),
+  solutions: (id, limit = 100, offset = 0) => call("GET", `/sessions/${encodeURIComponent(id)}/solutions?limit=${limit}&offset=${offset}`),
   getSessionTagged: (id) => call("GET", `/sessions/${encodeURIComponent(id)}`, undefined, false, { full: true }),
   getRunTagged: (id, runId) => call("GET", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, undefined, false, { full: true }),
   putRunIfMatch: (id, runId, run, etag) => call("PUT", `/sessions/${encodeURIComponent(id)}/runs/${encodeURIComponent(runId)}`, run, false, { headers: etag ? { "If-Match": etag } : {} }),

@@ -1,13 +1,15 @@
 //! A job reopened in another browser (loaded from the server by id, nothing
 //! of it in local storage) is the job it was: a trim job not yet solved
 //! needs no trial runs (`trim`); a check run renamed "trial…" stays a check
-//! run (`check`). A machine stored without a name has none (`machine`). And
+//! run (`check`); one solved more than 20 times shows its last solution
+//! (`solved`). A machine stored without a name has none (`machine`). And
 //! a whole job at a narrow window with the keyboard alone (`keyboard`).
 
 mod check;
 mod keyboard;
 mod keys;
 mod machine;
+mod solved;
 mod trim;
 
 use crate::harness::stand::Stand;
@@ -23,6 +25,8 @@ async fn a_reopened_job_is_what_it_was_and_a_job_runs_from_the_keyboard() {
     trim::a_job_with_supplied_coefficients_reopened_elsewhere_is_a_trim_job(&stand).await;
     stand.renew().await;
     check::a_check_run_named_trial_stays_a_check_run_when_reopened(&stand).await;
+    stand.renew().await;
+    solved::a_job_solved_often_reopens_with_its_last_solution(&stand).await;
     stand.renew().await;
     machine::a_machine_without_a_name_is_stored_without_one(&stand).await;
     stand.renew().await;

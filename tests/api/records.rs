@@ -155,6 +155,16 @@ async fn a_purpose_or_trim_that_means_nothing_is_refused_naming_its_field() {
             "invalid_value",
             "trim.influence_coefficients[0].amplitude_per_g",
         ),
+        (
+            // Below what any reading resolves, as the solve option refuses it.
+            Box::new(|s| {
+                s["trim"] = json!({"influence_coefficients": [
+                    {"speed_rpm": 2950, "sensor": "DE-H", "plane": "inboard", "amplitude_per_g": 1e-300, "phase_deg": 0}]})
+            }),
+            422,
+            "invalid_value",
+            "trim.influence_coefficients[0].amplitude_per_g",
+        ),
     ];
     for (change, want_status, want_code, want_field) in cases {
         let mut s = base.clone();

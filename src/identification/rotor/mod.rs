@@ -18,7 +18,7 @@
 //!
 //! A damping ratio within its resolution of zero (the readings cannot tell it
 //! from undamped) is reported as a bound with a `damping_unresolved` warning:
-//! see [`damping`].
+//! see the `damping` module.
 
 use nalgebra::DMatrix;
 use num_complex::Complex64;

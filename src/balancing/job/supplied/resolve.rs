@@ -26,7 +26,7 @@ const MAX_AMPLITUDE_PER_G: f64 = 1e15;
 const MIN_AMPLITUDE_PER_G: f64 = 1e-16;
 
 /// A coefficient computed here (pooled, or converted from a stored version)
-/// as the option accepts it: below [`MIN_AMPLITUDE_PER_G`] it is a rounding's
+/// as the option accepts it: below `MIN_AMPLITUDE_PER_G` (1e-16 unit/g) it is a rounding's
 /// worth of readings that did not change, so 0 (the sensor does not see the
 /// plane); a pooled 2e-19 unit/g was otherwise refused when used again.
 pub fn resolvable(amplitude_per_g: f64) -> f64 {

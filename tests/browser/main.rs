@@ -18,4 +18,5 @@ mod import;
 mod job;
 mod newuser;
 mod reopened;
+mod said;
 mod token;

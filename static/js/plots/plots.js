@@ -25,6 +25,23 @@ function bodeSeries(sol, sensor) {
   return out;
 }
 
+/** Two significant digits, for a damping ratio that may be far below 0.001. */
+const sig = (x) => (Number.isFinite(x) ? String(Number(x.toPrecision(2))) : "–");
+
+/**
+ * A damping ratio or amplification factor as the service gives it: a number,
+ * or, when the readings do not resolve the damping (`*_bound`), the bound
+ * they allow: "≤ ζ" (`upper`), "≥ AF" (`lower`). They were shown as plain
+ * numbers, an amplification factor of 2.4e13 as if measured.
+ */
+function bounded(x, bound, digits) {
+  if (bound === "upper") return `≤ ${x > 0 && x < 0.01 ? sig(x) : fmt(x, digits)}`;
+  if (bound === "lower") return `≥ ${fmt(x, digits)}`;
+  return fmt(x, digits);
+}
+
+const dampingUnresolved = (r) => r.damping_ratio_bound === "upper" || r.amplification_factor_bound === "lower";
+
 /** Identification of the rotor from the coefficients over the speeds (3 or more). */
 function identification(sol) {
   const box = h("div", { class: "identification" }, h("p", { class: "hint" }, "Looking for a critical speed in the range…"));
@@ -34,14 +51,21 @@ function identification(sol) {
     const hi = Math.max(...state.setup.speeds);
     const inside = (res.results || []).filter((r) => r.critical_speed_rpm >= lo && r.critical_speed_rpm <= hi);
     if (!inside.length) return replace(box, h("p", { class: "hint" }, "No critical speed found inside the speeds measured."));
+    const unresolved = inside.filter(dampingUnresolved);
     replace(box, h("h4", {}, "Critical speed inside the measured range"),
       h("table", { class: "ident-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Critical speed, rpm"), h("th", {}, "Damping ratio"), h("th", {}, "Amplification"), h("th", {}, "Margin to service speed"))),
         h("tbody", {}, inside.map((r) => h("tr", {},
           h("td", {}, r.sensor), h("td", {}, r.plane), h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0)),
-          h("td", {}, fmt(r.damping_ratio, 3)), h("td", {}, fmt(r.amplification_factor, 1)),
+          h("td", { class: r.damping_ratio_bound ? "damping bound" : "damping" }, bounded(r.damping_ratio, r.damping_ratio_bound, 3)),
+          h("td", { class: r.amplification_factor_bound ? "amplification bound" : "amplification" }, bounded(r.amplification_factor, r.amplification_factor_bound, 1)),
           h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "no service speed in this job's rotor data"
-            : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`))))));
+            : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`))))),
+      unresolved.map((r) => h("p", { class: "hint damping-unresolved", dataset: { sensor: r.sensor, plane: r.plane } },
+        `Damping not resolved (${r.sensor}, plane ${r.plane}, ${fmt(r.critical_speed_rpm, 0)} rpm): the readings cannot tell its damping ratio from zero`
+        + `${Number.isFinite(r.damping_ratio_resolution) ? ` (resolution ${sig(r.damping_ratio_resolution)})` : ""}. `
+        + "The damping ratio shown is the most they allow, the amplification factor the least, the margin API 684 asks the most. "
+        + "Read more speeds close to the critical speed, or with less noise, to resolve it.")));
   };
   if (identification.cache && identification.cache.key === key) draw(identification.cache.res);
   else {

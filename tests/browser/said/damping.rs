@@ -1,0 +1,79 @@
+//! A rotor without damping, read at 9 speeds about its critical: the service
+//! answers the damping ratio as an upper bound and the amplification factor
+//! as a lower one (`*_bound`), since the readings cannot tell the damping
+//! from zero. The form showed both as plain numbers (an amplification factor
+//! of some thousands as if measured).
+
+use fieldbal::balancing::model::Unit;
+use serde_json::Value;
+
+use crate::harness::stand::{post, Stand};
+use crate::harness::steps::js;
+
+#[path = "../../identification/support.rs"]
+mod jeffcott;
+
+pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
+    let b = &stand.browser;
+    // As tests/identification/rotor.rs: 2450 rpm, between the speeds of the grid.
+    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, 0.0);
+    let speeds = jeffcott::speeds(1200.0, 3600.0, 9);
+    let session =
+        serde_json::to_value(jeffcott::session(&[rotor], &speeds, Unit::UmPp, 0.0, 0)).unwrap();
+    // What the service says of it, to compare the page with.
+    let said = post(
+        stand,
+        "/api/v1/identify/rotor",
+        serde_json::json!({ "session": session }),
+    )
+    .await;
+    let r = &said["results"][0];
+    assert_eq!(r["damping_ratio_bound"], "upper", "{said}");
+    assert_eq!(r["amplification_factor_bound"], "lower", "{said}");
+    let zeta = r["damping_ratio"].as_f64().unwrap();
+    let factor = r["amplification_factor"].as_f64().unwrap();
+
+    let created = post(stand, "/api/v1/sessions", session.clone()).await;
+    let id = created["id"].as_str().expect("stored");
+    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
+        .await;
+    b.wait_until(
+        "the job is open",
+        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
+    )
+    .await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .identification td.critical").await;
+    let row: Value = js(
+        b,
+        "return [...document.querySelectorAll('#step-solve .identification tbody tr td')].map((t) => t.textContent)",
+    )
+    .await;
+    let cells: Vec<&str> = row
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    assert_eq!(&cells[..3], &["1H", "A", "2450"], "{row}");
+    let number = |cell: &str, sign: &str| -> f64 {
+        let rest = cell
+            .strip_prefix(sign)
+            .unwrap_or_else(|| panic!("{cell:?} is not given as “{sign}…”: {row}"));
+        rest.trim().parse().unwrap_or_else(|_| panic!("{cell:?}"))
+    };
+    let shown = number(cells[3], "≤ ");
+    assert!((shown - zeta).abs() <= 0.05 * zeta, "ζ {shown} for {zeta}");
+    let shown = number(cells[4], "≥ ");
+    assert!(
+        (shown - factor).abs() <= 0.5 + 1e-3 * factor,
+        "AF {shown} for {factor}"
+    );
+    let note = b
+        .text("#step-solve .identification .damping-unresolved")
+        .await;
+    assert!(
+        note.starts_with("Damping not resolved (1H, plane A, 2450 rpm)"),
+        "{note}"
+    );
+}

@@ -1,0 +1,17 @@
+//! What the form says matches what the service means: a damping the readings
+//! cannot resolve is shown as the bound it is (`damping`), a solution's date
+//! in the one format of every other stored time (`dates`), and a trim job's
+//! set-up says it is one and with which coefficients (`trim`).
+
+mod damping;
+
+use crate::harness::stand::Stand;
+
+/// One browser for every scene (CI time); each scene gets a new server and
+/// database and a freshly loaded form (`Stand::renew`).
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_form_says_what_the_service_means() {
+    let mut stand = Stand::start().await;
+    damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
+    stand.stop().await;
+}

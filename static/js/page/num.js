@@ -156,12 +156,13 @@ export function commonUnit(rows) {
 }
 
 /**
- * When a session, machine or coefficient version was stored, as one text on
+ * When a session, machine, coefficient version or solution was stored, as one text on
  * every page: "2026-11-24 06:25 UTC". The service stores RFC 3339 times in UTC
  * (…T06:25:39.123Z); the day in ISO order and the zone said match the
  * machine trend's axis (UTC) and the report's ISO date. The Sessions page
  * showed the browser's local format instead ("11/24/2026, 7:25:39 AM"), the
- * Machines page this one. A text that is no time is shown as it is.
+ * Machines page this one, and a solution's date "2026-11-24 08:56:03Z"
+ * (its seconds, no "UTC"). A text that is no time is shown as it is.
  */
 export function storedAt(t) {
   const d = t ? new Date(t) : null;

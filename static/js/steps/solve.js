@@ -4,7 +4,7 @@
 
 import { h, replace } from "../page/dom.js";
 import { banner, markServerError } from "../page/fields.js";
-import { fmt, fmtAngle, angleDiff, unitLabel, commonUnit } from "../page/num.js";
+import { fmt, fmtAngle, angleDiff, unitLabel, commonUnit, storedAt } from "../page/num.js";
 import { api } from "../job/api.js";
 import { state, changed } from "../job/state.js";
 import { plainWarning, doubt, UNBIASED_WORDS } from "../answer/words.js";
@@ -174,7 +174,7 @@ export function renderSolve(root, checkRun) {
     h("div", { class: "actions solve-actions" },
       h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve")),
     sol ? [
-      state.solutionDate ? h("p", { class: "hint solved-at" }, `Solved ${state.solutionDate.replace("T", " ").replace(/\.\d+/, "")}`) : "",
+      state.solutionDate ? h("p", { class: "hint solved-at" }, `Solved ${storedAt(state.solutionDate)}`) : "",
       answerParts(sol, checkRun, rerender),
     ] : h("p", { class: "lead" }, state.id === null ? "Store the zero run and the trial runs first." : "Press Solve to compute the corrections."),
   );

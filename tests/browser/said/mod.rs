@@ -4,6 +4,7 @@
 //! set-up says it is one and with which coefficients (`trim`).
 
 mod damping;
+mod dates;
 
 use crate::harness::stand::Stand;
 
@@ -13,5 +14,7 @@ use crate::harness::stand::Stand;
 async fn the_form_says_what_the_service_means() {
     let mut stand = Stand::start().await;
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
+    stand.renew().await;
+    dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
     stand.stop().await;
 }

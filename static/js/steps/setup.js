@@ -6,7 +6,8 @@ import { h, replace, $ } from "../page/dom.js";
 import { numberInput, textInput, selectInput, validateAll, mark, clearMarks, banner } from "../page/fields.js";
 import { parseSpeeds, UNITS, SPEEDS_RULE, DECIMAL_RULE, check } from "../page/num.js";
 import { conventionsPicture } from "./picture.js";
-import { state, setupLocked } from "../job/state.js";
+import { state, setupLocked, trimWords } from "../job/state.js";
+import { api } from "../job/api.js";
 
 /** ISO 21940-11 grades offered, and none (no rotor data). */
 export const GRADE_CHOICES = [["", "none"], ...["G0.4", "G1", "G2.5", "G6.3", "G16", "G40"].map((g) => [g, g])];
@@ -116,6 +117,25 @@ function checkUnique(root, list, kind) {
   return ok;
 }
 
+/**
+ * A trim job says so from its first step (it looked like any new job until
+ * the runs step), naming whose coefficients it is solved with: the machine's
+ * stored ones and their version (the one the session names, or the latest,
+ * asked of the service, as the solve will take), or the supplied ones.
+ */
+function trimNote(trim) {
+  if (!trim) return "";
+  const from = trim.coefficients_from;
+  const say = (which) => `Trim job: solved with ${trimWords(trim)}${which}, instead of trial runs: a zero run is all it needs.`;
+  if (!from || from.version) return h("p", { class: "note trim-note" }, say(from ? `, version ${from.version}` : ""));
+  const note = h("p", { class: "note trim-note" }, say(", the latest version"));
+  api.getMachine(from.machine).then((m) => {
+    const versions = (m.coefficients || []).map((c) => c.version).filter(Number.isFinite);
+    if (versions.length) note.textContent = say(`, version ${Math.max(...versions)} (the latest)`);
+  }, () => {});
+  return note;
+}
+
 /** Render the set-up step into `root`; `next` is called when it checks out. */
 export function renderSetup(root, next) {
   const locked = setupLocked();
@@ -150,6 +170,7 @@ export function renderSetup(root, next) {
   replace(
     root,
     h("h2", {}, "1 · Set-up"),
+    trimNote(setup.trim),
     locked ? h("p", { class: "note" }, "This set-up is stored with the session and can no longer change. To change it, export the session as JSON, edit it and import it as a new session.") : "",
     h(
       "fieldset",

@@ -10,7 +10,7 @@ mod keyboard;
 mod keys;
 mod machine;
 mod solved;
-mod trim;
+pub(crate) mod trim;
 
 use crate::harness::stand::Stand;
 use crate::harness::steps::js;

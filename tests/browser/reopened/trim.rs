@@ -11,7 +11,7 @@ use crate::harness::stand::{example_session, get, post, Stand};
 use crate::harness::steps::stored_id;
 
 /// A machine with coefficients pooled from one solved job, through the API.
-async fn machine_with_coefficients(stand: &Stand) -> Value {
+pub async fn machine_with_coefficients(stand: &Stand) -> Value {
     let machine = post(
         stand,
         "/api/v1/machines",

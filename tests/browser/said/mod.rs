@@ -5,6 +5,7 @@
 
 mod damping;
 mod dates;
+mod trim;
 
 use crate::harness::stand::Stand;
 
@@ -16,5 +17,9 @@ async fn the_form_says_what_the_service_means() {
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
     stand.renew().await;
     dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
+    stand.renew().await;
+    trim::a_trim_job_from_a_machine_says_so_at_its_set_up(&stand).await;
+    stand.renew().await;
+    trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
     stand.stop().await;
 }

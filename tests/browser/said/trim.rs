@@ -1,0 +1,66 @@
+//! A trim job is solved with coefficients known before it, not from trial
+//! runs, and its set-up step did not say so: it looked like any new job
+//! until the runs step. It now says it is a trim job and whose coefficients
+//! it is solved with: a machine's stored ones (which version), or supplied.
+
+use serde_json::json;
+
+use crate::harness::form::field;
+use crate::harness::stand::{example_session, get, post, Stand};
+use crate::reopened::reopen_elsewhere;
+use crate::reopened::trim::machine_with_coefficients;
+
+/// The trim job begun on the machine page: the set-up names the machine and
+/// its coefficients' version (the latest, as the solve will use).
+pub async fn a_trim_job_from_a_machine_says_so_at_its_set_up(stand: &Stand) {
+    let b = &stand.browser;
+    machine_with_coefficients(stand).await;
+    let latest = get(stand, "/api/v1/machines/PUMP-1/coefficients").await;
+    let version = latest["version"].as_u64().expect("a version");
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.click("button.trim-job").await;
+    b.wait_for(&field("name")).await;
+    let want = format!(
+        "Trim job: solved with the stored coefficients of machine PUMP-1, version {version} (the latest), instead of trial runs: a zero run is all it needs."
+    );
+    b.wait_until(
+        "the set-up names the coefficients' version",
+        &format!(
+            "const e = document.querySelector('#step-setup .trim-note'); return !!e && e.textContent === {}",
+            json!(want)
+        ),
+    )
+    .await;
+    // A job for the machine that is no trim job says nothing of the kind.
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.click("button.new-job").await;
+    b.wait_for(&field("name")).await;
+    let notes = crate::harness::steps::js(
+        b,
+        "return document.querySelectorAll('#step-setup .trim-note').length",
+    )
+    .await;
+    assert_eq!(notes, json!(0));
+}
+
+/// A job stored with supplied coefficients, reopened at its (locked) set-up.
+pub async fn a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(stand: &Stand) {
+    let b = &stand.browser;
+    machine_with_coefficients(stand).await;
+    let known = get(stand, "/api/v1/machines/PUMP-1/coefficients").await;
+    let supplied = known["influence_coefficients"].clone();
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    session["name"] = json!("supplied trim");
+    session["runs"] = json!([session["runs"][0].clone()]);
+    session["trim"] = json!({ "influence_coefficients": supplied });
+    let created = post(stand, "/api/v1/sessions", session).await;
+    let id = created["id"].as_str().expect("stored").to_string();
+    reopen_elsewhere(stand, &id, "setup").await;
+    let said = b.text("#step-setup .trim-note").await;
+    assert_eq!(
+        said,
+        "Trim job: solved with the 8 supplied influence coefficients, instead of trial runs: a zero run is all it needs."
+    );
+}

@@ -1,7 +1,7 @@
 //! A stand for one browser test: a real server on a temporary SQLite file and
 //! a headless Chromium showing the form.
 
-use serde_json::Value;
+use serde_json::{json, Value};
 
 use super::Browser;
 
@@ -97,4 +97,35 @@ pub async fn stored_session_id(stand: &Stand) -> String {
 pub fn example_session(name: &str) -> (Value, Value) {
     let example = crate::common::example(name);
     (example["session"].clone(), example["expected"].clone())
+}
+
+/// Machine PUMP-1 with coefficients (version 1) pooled from one solved job
+/// (the pump example), all through the API as another stand PC would store
+/// them; the job's session is returned.
+pub async fn machine_with_coefficients(stand: &Stand) -> Value {
+    let machine = post(
+        stand,
+        "/api/v1/machines",
+        json!({"id": "PUMP-1", "name": "pump"}),
+    )
+    .await;
+    assert_eq!(machine["id"], "PUMP-1", "{machine}");
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    session["machine"] = json!("PUMP-1");
+    let job = post(stand, "/api/v1/sessions", session.clone()).await;
+    let job = job["id"].as_str().expect("stored").to_string();
+    post(
+        stand,
+        &format!("/api/v1/sessions/{job}/solutions"),
+        json!({}),
+    )
+    .await;
+    let pooled = post(
+        stand,
+        "/api/v1/machines/PUMP-1/coefficients",
+        json!({"sessions": [job]}),
+    )
+    .await;
+    assert_eq!(pooled["version"], 1, "{pooled}");
+    session
 }

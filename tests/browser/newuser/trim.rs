@@ -1,6 +1,6 @@
 //! A trim job from stored coefficients, reopened in a browser that never saw it.
 
-use crate::harness::stand::{example_session, get, post, Stand};
+use crate::harness::stand::{get, machine_with_coefficients, post, Stand};
 use serde_json::json;
 
 pub async fn a_trim_job_reopened_elsewhere_still_uses_the_stored_coefficients(stand: &Stand) {
@@ -8,30 +8,7 @@ pub async fn a_trim_job_reopened_elsewhere_still_uses_the_stored_coefficients(st
     // A solved job for the machine, its coefficients pooled, then a trim job
     // with only its reference run solved from them: all through the API, as
     // another stand PC would have stored them.
-    let machine = post(
-        stand,
-        "/api/v1/machines",
-        json!({"id": "PUMP-1", "name": "pump"}),
-    )
-    .await;
-    assert_eq!(machine["id"], "PUMP-1", "{machine}");
-    let (mut session, _) = example_session("pump-two-plane-exact.json");
-    session["machine"] = json!("PUMP-1");
-    let job = post(stand, "/api/v1/sessions", session.clone()).await;
-    let job = job["id"].as_str().expect("stored").to_string();
-    post(
-        stand,
-        &format!("/api/v1/sessions/{job}/solutions"),
-        json!({}),
-    )
-    .await;
-    let pooled = post(
-        stand,
-        "/api/v1/machines/PUMP-1/coefficients",
-        json!({"sessions": [job]}),
-    )
-    .await;
-    assert_eq!(pooled["version"], 1, "{pooled}");
+    let mut session = machine_with_coefficients(stand).await;
     session["name"] = json!("PUMP-1 trim");
     session["runs"] = json!([session["runs"][0].clone()]);
     let trim = post(stand, "/api/v1/sessions", session).await;

@@ -10,7 +10,7 @@ mod keyboard;
 mod keys;
 mod machine;
 mod solved;
-pub(crate) mod trim;
+mod trim;
 
 use crate::harness::stand::Stand;
 use crate::harness::steps::js;

@@ -7,37 +7,8 @@ use serde_json::{json, Value};
 
 use super::reopen_elsewhere;
 use crate::harness::form::{self, field, type_into};
-use crate::harness::stand::{example_session, get, post, Stand};
+use crate::harness::stand::{example_session, get, machine_with_coefficients, post, Stand};
 use crate::harness::steps::stored_id;
-
-/// A machine with coefficients pooled from one solved job, through the API.
-pub async fn machine_with_coefficients(stand: &Stand) -> Value {
-    let machine = post(
-        stand,
-        "/api/v1/machines",
-        json!({"id": "PUMP-1", "name": "pump"}),
-    )
-    .await;
-    assert_eq!(machine["id"], "PUMP-1", "{machine}");
-    let (mut session, _) = example_session("pump-two-plane-exact.json");
-    session["machine"] = json!("PUMP-1");
-    let job = post(stand, "/api/v1/sessions", session.clone()).await;
-    let job = job["id"].as_str().expect("stored").to_string();
-    post(
-        stand,
-        &format!("/api/v1/sessions/{job}/solutions"),
-        json!({}),
-    )
-    .await;
-    let pooled = post(
-        stand,
-        "/api/v1/machines/PUMP-1/coefficients",
-        json!({"sessions": [job]}),
-    )
-    .await;
-    assert_eq!(pooled["version"], 1, "{pooled}");
-    session
-}
 
 /// The stored solutions of session `id`, once there are `n`.
 async fn solutions(stand: &Stand, id: &str, n: usize) -> Vec<Value> {

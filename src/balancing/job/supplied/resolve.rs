@@ -10,20 +10,9 @@ use crate::balancing::model::{
     Conventions, PhaseConvention, SolveOptions, SuppliedCoefficient, Unit,
 };
 use crate::balancing::phasor::reading_in;
-use crate::balancing::validate::Checked;
+use crate::balancing::validate::{Checked, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
 
 const FIELD: &str = "options.influence_coefficients";
-/// The largest coefficient a session's readings could give: the largest
-/// amplitude (1e9) over the lightest trial mass (1e-6 g). Beyond it the
-/// fit's products overflow (1e300 unit/g made the SVD's singular values NaN
-/// and the solver panic).
-const MAX_AMPLITUDE_PER_G: f64 = 1e15;
-/// The smallest non-zero coefficient a session's readings could give: the
-/// smallest non-zero amplitude (1e-9) over the heaviest trial mass (1e7 g).
-/// Below it the correction's covariance overflows (1e-300 unit/g gave a
-/// 1e302 g correction whose covariance was answered as `null`). 0 stays
-/// valid: the sensor does not see the plane.
-const MIN_AMPLITUDE_PER_G: f64 = 1e-16;
 
 /// A coefficient computed here (pooled, or converted from a stored version)
 /// as the option accepts it: below `MIN_AMPLITUDE_PER_G` (1e-16 unit/g) it is a rounding's
@@ -36,7 +25,7 @@ pub fn resolvable(amplitude_per_g: f64) -> f64 {
         amplitude_per_g
     }
 }
-/// The square of [`MAX_AMPLITUDE_PER_G`], for the covariance's entries.
+/// The square of `MAX_AMPLITUDE_PER_G`, for the covariance's entries.
 const MAX_COVARIANCE: f64 = 1e30;
 
 /// Flip of the imaginary axis between the session's phase convention and the

@@ -36,6 +36,18 @@ pub(crate) const MAX_AMPLITUDE: f64 = 1e9;
 /// Smallest non-zero amplitude: no instrument resolves 1e-9 of its unit, and
 /// far smaller ones (1e-100) underflow when squared twice in the 95 % figures.
 pub(crate) const MIN_AMPLITUDE: f64 = 1e-9;
+/// The range of a supplied influence coefficient (solve option, trim record).
+/// The largest coefficient a session's readings could give: the largest
+/// amplitude (1e9) over the lightest trial mass (1e-6 g). Beyond it the
+/// fit's products overflow (1e300 unit/g made the SVD's singular values NaN
+/// and the solver panic).
+pub(crate) const MAX_AMPLITUDE_PER_G: f64 = 1e15;
+/// The smallest non-zero coefficient a session's readings could give: the
+/// smallest non-zero amplitude (1e-9) over the heaviest trial mass (1e7 g).
+/// Below it the correction's covariance overflows (1e-300 unit/g gave a
+/// 1e302 g correction whose covariance was answered as `null`). 0 stays
+/// valid: the sensor does not see the plane.
+pub(crate) const MIN_AMPLITUDE_PER_G: f64 = 1e-16;
 /// Largest angle or phase a session may give, degrees (either sign).
 pub(crate) const MAX_ANGLE_DEG: f64 = 1e6;
 /// ISO 21940-11 balance grades G, mm/s (method 5.2).

@@ -3,15 +3,9 @@
 //! given back unchanged, so checked only for what would make them mean nothing.
 
 use super::fields::{check_angle, check_positive, invalid};
-use super::IdIndex;
+use super::{IdIndex, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Session, Trim};
-
-/// Largest supplied coefficient, sensor unit per gram (as the solve option's).
-const MAX_COEFFICIENT: f64 = 1e15;
-/// Smallest non-zero one (as the solve option's): below it a solve refuses
-/// the coefficient, so the record would name a trim that cannot be solved.
-const MIN_COEFFICIENT: f64 = 1e-16;
 
 /// Exactly one source of coefficients, naming a machine or listing known
 /// planes' and sensors' coefficients.
@@ -68,14 +62,14 @@ pub(super) fn check_trim(
                 check_positive(
                     || f("amplitude_per_g"),
                     c.amplitude_per_g,
-                    MAX_COEFFICIENT,
+                    MAX_AMPLITUDE_PER_G,
                     true,
                     "the coefficient",
                 )?;
-                if c.amplitude_per_g > 0.0 && c.amplitude_per_g < MIN_COEFFICIENT {
+                if c.amplitude_per_g > 0.0 && c.amplitude_per_g < MIN_AMPLITUDE_PER_G {
                     return Err(invalid(
                         f("amplitude_per_g"),
-                        format!("a coefficient is 0 (the sensor does not see the plane) or from {MIN_COEFFICIENT:e} unit/g, as the solve option's"),
+                        format!("a coefficient is 0 (the sensor does not see the plane) or from {MIN_AMPLITUDE_PER_G:e} unit/g, as the solve option's"),
                     ));
                 }
                 check_angle(|| f("phase_deg"), c.phase_deg)?;

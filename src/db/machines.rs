@@ -3,7 +3,10 @@
 //! each one's latest solution, and its coefficient versions. A version is
 //! allocated inside the inserting transaction (one more than the machine's
 //! largest) while the machine's row is locked, and `UNIQUE (machine_seq,
-//! version)` keeps two from colliding.
+//! version)` keeps two from colliding. Numbers are never reused under one
+//! machine id: deleting a machine keeps its last version number
+//! (`machine_versions_retired`), and a machine created again under that id
+//! numbers on from there.
 
 use serde::{Deserialize, Serialize};
 use sqlx::Row;
@@ -248,16 +251,41 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
     })
 }
 
-/// Delete a machine and its coefficient versions (never its sessions).
+/// Delete a machine and its coefficient versions (never its sessions),
+/// keeping the id's last version number so that none is numbered twice.
 pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
     let mut tx = db.begin_write().await?;
-    let done = sqlx::query("DELETE FROM machines WHERE id = $1")
+    // Locked first: a version being stored by another replica is either
+    // counted here or refused (its machine gone), never numbered again later.
+    let lock = engine::for_update(&tx, "SELECT seq FROM machines WHERE id = $1");
+    let seq: i64 = sqlx::query(&lock)
         .bind(id)
+        .fetch_optional(&mut *tx)
+        .await?
+        .ok_or_else(|| not_found(id))?
+        .get(0);
+    let last: Option<i64> =
+        sqlx::query("SELECT MAX(version) FROM machine_coefficients WHERE machine_seq = $1")
+            .bind(seq)
+            .fetch_one(&mut *tx)
+            .await?
+            .get(0);
+    if let Some(last) = last {
+        sqlx::query(
+            "INSERT INTO machine_versions_retired (machine_id, last_version) VALUES ($1, $2)
+             ON CONFLICT (machine_id) DO UPDATE SET last_version =
+                 CASE WHEN excluded.last_version > machine_versions_retired.last_version
+                      THEN excluded.last_version ELSE machine_versions_retired.last_version END",
+        )
+        .bind(id)
+        .bind(last)
         .execute(&mut *tx)
         .await?;
-    if done.rows_affected() == 0 {
-        return Err(not_found(id));
     }
+    sqlx::query("DELETE FROM machines WHERE seq = $1")
+        .bind(seq)
+        .execute(&mut *tx)
+        .await?;
     tx.commit().await?;
     Ok(())
 }
@@ -310,10 +338,14 @@ pub async fn store_coefficients(
         .fetch_optional(&mut *tx)
         .await?
         .ok_or_else(|| not_found(machine))?;
+    // After the machine's own versions, or else after those of a deleted
+    // machine of the same id (every own version is above those).
     let row = sqlx::query(
         "INSERT INTO machine_coefficients (machine_seq, version, sessions, body)
          SELECT m.seq,
-                COALESCE((SELECT MAX(c.version) FROM machine_coefficients c WHERE c.machine_seq = m.seq), 0) + 1,
+                COALESCE((SELECT MAX(c.version) FROM machine_coefficients c WHERE c.machine_seq = m.seq),
+                         (SELECT r.last_version FROM machine_versions_retired r WHERE r.machine_id = m.id),
+                         0) + 1,
                 $1, $2
          FROM machines m WHERE m.id = $3
          RETURNING version, created_at",
@@ -341,6 +373,9 @@ pub async fn store_coefficients(
 pub enum Missing {
     Machine,
     Version,
+    /// The version was deleted with an earlier machine of this id, whose
+    /// versions went up to this one; it is never numbered again.
+    Retired(i64),
     NoVersions,
 }
 
@@ -368,14 +403,23 @@ pub async fn coefficients(
     .bind(version)
     .fetch_optional(&mut *read)
     .await?;
-    read.commit().await?;
     let Some(r) = row else {
-        return Ok(Err(if version.is_some() {
-            Missing::Version
-        } else {
-            Missing::NoVersions
+        let Some(v) = version else {
+            return Ok(Err(Missing::NoVersions));
+        };
+        let retired: Option<i64> =
+            sqlx::query("SELECT last_version FROM machine_versions_retired WHERE machine_id = $1")
+                .bind(machine)
+                .fetch_optional(&mut *read)
+                .await?
+                .map(|r| r.get(0));
+        read.commit().await?;
+        return Ok(Err(match retired {
+            Some(last) if (1..=last).contains(&v) => Missing::Retired(last),
+            _ => Missing::Version,
         }));
     };
+    read.commit().await?;
     Ok(Ok(StoredCoefficients {
         machine: machine.to_string(),
         version: r.get("version"),

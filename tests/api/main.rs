@@ -11,6 +11,7 @@ mod common;
 mod job_support;
 
 mod errors;
+mod machine_ids;
 mod machines;
 mod openapi;
 mod records;

@@ -53,6 +53,17 @@ pub async fn resolve(
                 ),
             )))
         }
+        Err(Missing::Retired(last)) => {
+            return Err(fail(InputError::invalid(
+                "unknown_version",
+                "options.coefficients_from.version",
+                super::machines::retired_version(
+                    &from.machine,
+                    from.version.unwrap_or_default(),
+                    last,
+                ),
+            )))
+        }
         Err(Missing::NoVersions) => {
             return Err(fail(InputError::invalid(
                 "unknown_version",

@@ -30,6 +30,14 @@ fn invalid(field: &str, message: impl Into<String>) -> InputError {
     InputError::invalid("invalid_value", field, message)
 }
 
+/// Why version `v` of `machine` is not there any more: it was deleted with an
+/// earlier machine of that id, and numbers are never given twice.
+pub(crate) fn retired_version(machine: &str, v: i64, last: i64) -> String {
+    format!(
+        "machine '{machine}' has no coefficient version {v}: versions 1 to {last} were deleted with an earlier machine of this id, and their numbers are never given to other coefficients"
+    )
+}
+
 /// 404 for a machine id in the path that names no machine.
 fn no_machine(id: &str) -> ApiError {
     ApiError::not_found(format!("no machine has the id '{id}'"))
@@ -262,6 +270,12 @@ pub async fn get_coefficients(
         Err(Missing::Version) => Err(ApiError::not_found(format!(
             "machine '{id}' has no coefficient version {}",
             params.version.unwrap_or_default()
+        ))
+        .with_field("version")),
+        Err(Missing::Retired(last)) => Err(ApiError::not_found(retired_version(
+            &id,
+            params.version.unwrap_or_default(),
+            last,
         ))
         .with_field("version")),
         Err(Missing::NoVersions) => Err(ApiError::not_found(format!(

@@ -1,0 +1,99 @@
+//! A machine's id names it for good: coefficient versions are never numbered
+//! twice under one id (a script pinned to `{machine, version}` never gets
+//! other coefficients after the machine is deleted and created again), and an
+//! id holds no control characters (refused naming the field).
+
+use crate::common;
+use crate::job_support;
+
+use common::{fresh_server, path_segment, post, send};
+use fieldbal::balancing::model::Conventions;
+use job_support::*;
+use serde_json::{json, Value};
+
+fn job_session(machine: &str, seed: u64) -> Value {
+    let conv = Conventions::default();
+    let mut n = Noise::new(1.0, 1.0, seed);
+    let mut s = session(conv, opening_runs(&Rotor::new(), conv, true, &mut n));
+    s["machine"] = json!(machine);
+    s
+}
+
+async fn store(client: &reqwest::Client, server: &common::Server, s: &Value) -> String {
+    let (status, _, created) = post(client, &server.url("/api/v1/sessions"), s).await;
+    assert_eq!(status, 201, "{created}");
+    created["id"].as_str().unwrap().to_string()
+}
+
+async fn pool(client: &reqwest::Client, server: &common::Server, machine: &str, s: &str) -> Value {
+    let url = server.url(&format!("/api/v1/machines/{machine}/coefficients"));
+    let (status, _, body) = post(client, &url, &json!({"sessions": [s]})).await;
+    assert_eq!(status, 201, "{body}");
+    body
+}
+
+#[tokio::test]
+async fn a_machine_deleted_and_created_again_never_numbers_a_version_twice() {
+    let (_dir, server, client) = fresh_server().await;
+    let machines = server.url("/api/v1/machines");
+    let (status, _, _) = post(&client, &machines, &json!({"id": "P-1"})).await;
+    assert_eq!(status, 201);
+    let old = store(&client, &server, &job_session("P-1", 51)).await;
+    assert_eq!(pool(&client, &server, "P-1", &old).await["version"], 1);
+    assert_eq!(pool(&client, &server, "P-1", &old).await["version"], 2);
+
+    let (status, _, _) = send(client.delete(server.url("/api/v1/machines/P-1"))).await;
+    assert_eq!(status, 204);
+    let (status, _, _) = post(&client, &machines, &json!({"id": "P-1"})).await;
+    assert_eq!(status, 201);
+    // A new job on the machine created again, with other readings.
+    let new = store(&client, &server, &job_session("P-1", 52)).await;
+    let v = pool(&client, &server, "P-1", &new).await;
+    assert_eq!(
+        v["version"], 3,
+        "numbering goes on after the deleted versions"
+    );
+
+    // A reference pinned to a deleted version is refused, never answered
+    // with the new coefficients.
+    let (status, _, err) =
+        send(client.get(server.url("/api/v1/machines/P-1/coefficients?version=1"))).await;
+    assert_eq!(status, 404, "{err}");
+    assert_eq!(err["error"]["field"], "version");
+    let msg = err["error"]["message"].as_str().unwrap();
+    assert!(msg.contains("deleted"), "says why: {msg}");
+    let pinned = json!({"coefficients_from": {"machine": "P-1", "version": 1}});
+    let (status, _, err) = post(
+        &client,
+        &server.url(&format!("/api/v1/sessions/{new}/solutions")),
+        &pinned,
+    )
+    .await;
+    assert_eq!(status, 422, "{err}");
+    assert_eq!(err["error"]["code"], "unknown_version");
+    assert_eq!(err["error"]["field"], "coefficients_from.version");
+
+    let (_, _, latest) = send(client.get(server.url("/api/v1/machines/P-1/coefficients"))).await;
+    assert_eq!(latest["version"], 3);
+    assert_eq!(latest["sessions"], json!([new]));
+    let (_, _, m) = send(client.get(server.url("/api/v1/machines/P-1"))).await;
+    let listed: Vec<i64> = m["coefficients"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["version"].as_i64().unwrap())
+        .collect();
+    assert_eq!(listed, [3], "the deleted versions are gone");
+
+    // Deleted again without a version of its own since: still no reuse.
+    let (status, _, _) = send(client.delete(server.url("/api/v1/machines/P-1"))).await;
+    assert_eq!(status, 204);
+    post(&client, &machines, &json!({"id": "P-1"})).await;
+    post(&client, &machines, &json!({"id": "p-1"})).await;
+    send(client.delete(server.url("/api/v1/machines/P-1"))).await;
+    post(&client, &machines, &json!({"id": "P-1"})).await;
+    assert_eq!(pool(&client, &server, "P-1", &new).await["version"], 4);
+    // Ids are compared exactly: another machine's numbering is its own.
+    let other = store(&client, &server, &job_session("p-1", 53)).await;
+    assert_eq!(pool(&client, &server, "p-1", &other).await["version"], 1);
+}

@@ -97,3 +97,33 @@ async fn a_machine_deleted_and_created_again_never_numbers_a_version_twice() {
     let other = store(&client, &server, &job_session("p-1", 53)).await;
     assert_eq!(pool(&client, &server, "p-1", &other).await["version"], 1);
 }
+
+#[tokio::test]
+async fn machine_ids_with_control_characters_are_refused_naming_the_field() {
+    let (_dir, server, client) = fresh_server().await;
+    let machines = server.url("/api/v1/machines");
+    for id in [
+        "a\u{0}b",
+        "a\nb",
+        "tab\there",
+        "\u{7}",
+        "a\u{7f}",
+        "a\u{85}b",
+        "end\r",
+    ] {
+        let (status, _, err) = post(&client, &machines, &json!({"id": id})).await;
+        assert_eq!(status, 422, "{id:?}: {err}");
+        assert_eq!(err["error"]["code"], "invalid_value", "{id:?}");
+        assert_eq!(err["error"]["field"], "id", "{id:?}");
+    }
+    let (_, _, list) = send(client.get(&machines)).await;
+    assert_eq!(list["total"], 0, "nothing stored");
+    // Printable ids of every script stay valid, and readable by their path.
+    for id in ["ID-FAN-3", "pump 1/2", "Gebläse \u{e9}", "\u{6c34}\u{6cf5}"] {
+        let (status, _, body) = post(&client, &machines, &json!({"id": id})).await;
+        assert_eq!(status, 201, "{id}: {body}");
+        let (status, _, got) =
+            send(client.get(server.url(&format!("/api/v1/machines/{}", path_segment(id))))).await;
+        assert_eq!((status, got["id"].as_str()), (200, Some(id)));
+    }
+}

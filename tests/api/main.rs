@@ -19,3 +19,4 @@ mod runs;
 mod serve;
 mod service;
 mod sessions;
+mod stored_text;

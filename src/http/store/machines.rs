@@ -45,6 +45,7 @@ fn no_machine(id: &str) -> ApiError {
 
 /// The checks of a posted machine (its rotor as in a session).
 fn validate(m: &NewMachine) -> Result<(), InputError> {
+    super::text::check_machine(m)?;
     let n = m.id.chars().count();
     if n == 0 || n > 64 {
         return Err(invalid(

@@ -82,6 +82,7 @@ pub async fn append(
     if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
         return Ok(headers::replay(r));
     }
+    super::text::check_new_run(&run)?;
     let location = format!(
         "/api/v1/sessions/{}/runs/{}",
         encode_segment(&id),

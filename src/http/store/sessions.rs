@@ -112,6 +112,7 @@ pub async fn create(
     if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
         return Ok(headers::replay(r));
     }
+    super::text::check_session(&session)?;
     let readings = session.runs.iter().map(|r| r.readings.len()).sum();
     let session = check_blocking(session, readings, validate_stored).await?;
     let id = uuid::Uuid::new_v4().to_string();

@@ -13,7 +13,7 @@ use sqlx::Row;
 use utoipa::ToSchema;
 
 use super::idempotency::{self, Idem};
-use super::{engine, sessions, Db, ListPage, StoreError};
+use super::{engine, never_stored, sessions, Db, ListPage, StoreError};
 use crate::balancing::model::{Rotor, Session};
 
 /// A machine as posted.
@@ -190,6 +190,9 @@ pub async fn list(db: &Db, page: ListPage) -> Result<MachineList, StoreError> {
 
 /// The machine, its sessions and its coefficient versions, from one snapshot.
 pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
+    if never_stored(db.engine, id) {
+        return Err(not_found(id));
+    }
     let mut read = db.begin_read().await?;
     let row =
         sqlx::query("SELECT seq, id, name, rotor, notes, created_at FROM machines WHERE id = $1")
@@ -254,6 +257,9 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
 /// Delete a machine and its coefficient versions (never its sessions),
 /// keeping the id's last version number so that none is numbered twice.
 pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
+    if never_stored(db.engine, id) {
+        return Err(not_found(id));
+    }
     let mut tx = db.begin_write().await?;
     // Locked first: a version being stored by another replica is either
     // counted here or refused (its machine gone), never numbered again later.
@@ -292,6 +298,9 @@ pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
 
 /// Whether the machine exists.
 pub async fn exists(db: &Db, id: &str) -> Result<bool, StoreError> {
+    if never_stored(db.engine, id) {
+        return Ok(false);
+    }
     Ok(sqlx::query("SELECT 1 FROM machines WHERE id = $1")
         .bind(id)
         .fetch_optional(&db.pool)
@@ -328,6 +337,9 @@ pub async fn store_coefficients(
     body: serde_json::Map<String, serde_json::Value>,
     idem: Option<&Idem>,
 ) -> Result<StoredCoefficients, StoreError> {
+    if never_stored(db.engine, machine) {
+        return Err(not_found(machine));
+    }
     let mut tx = db.begin_write().await?;
     idempotency::guard(&mut tx, idem).await?;
     // Lock the machine so that concurrent versions (other replicas) are
@@ -385,6 +397,9 @@ pub async fn coefficients(
     machine: &str,
     version: Option<i64>,
 ) -> Result<Result<StoredCoefficients, Missing>, StoreError> {
+    if never_stored(db.engine, machine) {
+        return Ok(Err(Missing::Machine));
+    }
     let mut read = db.begin_read().await?;
     let Some(m) = sqlx::query("SELECT seq FROM machines WHERE id = $1")
         .bind(machine)

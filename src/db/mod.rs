@@ -46,6 +46,15 @@ pub use solutions::{StoredSolution, UsedRun};
 
 pub use engine::{connect, connect_pool, Engine};
 
+/// Whether no row can have `key` as its id on `engine`: PostgreSQL's text
+/// holds no NUL, and a lookup by a key with one fails with an error (a 500)
+/// instead of finding nothing. Such keys are answered as not found without
+/// asking. SQLite may hold them (stored before the service refused NUL in
+/// ids), so there they are looked up as any other.
+pub(crate) fn never_stored(engine: Engine, key: &str) -> bool {
+    engine == Engine::Postgres && key.contains('\0')
+}
+
 /// The pool and the queue of this process's writers.
 #[derive(Debug, Clone)]
 pub struct Db {

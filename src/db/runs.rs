@@ -6,7 +6,7 @@ use sqlx::{AnyConnection, Row};
 use utoipa::ToSchema;
 
 use super::idempotency::Keep;
-use super::{sessions, Db, StoreError};
+use super::{never_stored, sessions, Db, Engine, StoreError};
 use crate::balancing::model::{Run, Session};
 use crate::balancing::InputError;
 
@@ -36,6 +36,10 @@ async fn check_off_async(
         .await
         .map_err(|e| StoreError::Db(sqlx::Error::Protocol(format!("validation panicked: {e}"))))?
         .map_err(StoreError::Invalid)
+}
+
+fn no_run(id: &str, run_id: &str) -> StoreError {
+    StoreError::NotFound(format!("session '{id}' has no run with the id '{run_id}'"))
 }
 
 /// Insert a run that does not exist yet, as version 1.
@@ -125,6 +129,9 @@ pub async fn replace(
 ) -> Result<i64, StoreError> {
     let mut tx = db.begin_write().await?;
     let (seq, mut session) = sessions::load_for_update(&mut tx, id).await?;
+    if never_stored(Engine::of_conn(&tx), &run.id) {
+        return Err(no_run(id, &run.id));
+    }
     if let Some(wanted) = if_match {
         let current = current_version(&mut tx, seq, &run.id).await?;
         if current.is_some_and(|v| !wanted.contains(&v)) {
@@ -139,12 +146,7 @@ pub async fn replace(
         .runs
         .iter()
         .position(|r| r.id == run.id)
-        .ok_or_else(|| {
-            StoreError::NotFound(format!(
-                "session '{id}' has no run with the id '{}'",
-                run.id
-            ))
-        })?;
+        .ok_or_else(|| no_run(id, &run.id))?;
     session.runs[index] = run.clone();
     check_off_async(session, index, check).await?;
     let version: i64 = sqlx::query(
@@ -177,7 +179,10 @@ pub async fn versions(
     limit: i64,
     offset: i64,
 ) -> Result<(Vec<RunVersion>, i64), StoreError> {
-    let seq = sessions::seq_of(&db.pool, id).await?;
+    let seq = sessions::seq_of(&db.pool, db.engine, id).await?;
+    if never_stored(db.engine, run_id) {
+        return Err(no_run(id, run_id));
+    }
     let rows = sqlx::query(
         "SELECT v.version, v.created_at, v.body, r.version AS current
          FROM run_versions v JOIN runs r ON r.session_seq = v.session_seq AND r.run_id = v.run_id
@@ -197,9 +202,7 @@ pub async fn versions(
             .await?
             .get(0);
     if total == 0 {
-        return Err(StoreError::NotFound(format!(
-            "session '{id}' has no run with the id '{run_id}'"
-        )));
+        return Err(no_run(id, run_id));
     }
     let page = rows
         .iter()
@@ -235,7 +238,10 @@ async fn current_version(
 /// The current version of one run and its number.
 pub async fn get(db: &Db, id: &str, run_id: &str) -> Result<(Run, i64), StoreError> {
     let mut conn = db.pool.acquire().await?;
-    let seq = sessions::seq_of(&mut *conn, id).await?;
+    let seq = sessions::seq_of(&mut *conn, db.engine, id).await?;
+    if never_stored(db.engine, run_id) {
+        return Err(no_run(id, run_id));
+    }
     let row = sqlx::query(
         "SELECT v.body, r.version FROM runs r
          JOIN run_versions v ON v.session_seq = r.session_seq AND v.run_id = r.run_id AND v.version = r.version
@@ -245,8 +251,6 @@ pub async fn get(db: &Db, id: &str, run_id: &str) -> Result<(Run, i64), StoreErr
     .bind(run_id)
     .fetch_optional(&mut *conn)
     .await?
-    .ok_or_else(|| {
-        StoreError::NotFound(format!("session '{id}' has no run with the id '{run_id}'"))
-    })?;
+    .ok_or_else(|| no_run(id, run_id))?;
     Ok((serde_json::from_str(row.get("body"))?, row.get("version")))
 }

@@ -5,7 +5,7 @@ use sqlx::Row;
 use utoipa::ToSchema;
 
 use super::idempotency::Keep;
-use super::{engine, runs, Db, ListPage, StoreError};
+use super::{engine, never_stored, runs, Db, Engine, ListPage, StoreError};
 use crate::balancing::model::Session;
 
 /// One line of the session list.
@@ -109,17 +109,24 @@ pub async fn list(db: &Db, page: ListPage) -> Result<SessionList, StoreError> {
     })
 }
 
+fn no_session(id: &str) -> StoreError {
+    StoreError::NotFound(format!("no session has the id '{id}'"))
+}
+
 /// The session's internal key, or `NotFound`.
-pub(crate) async fn seq_of<'e, E>(exec: E, id: &str) -> Result<i64, StoreError>
+pub(crate) async fn seq_of<'e, E>(exec: E, engine: Engine, id: &str) -> Result<i64, StoreError>
 where
     E: sqlx::Executor<'e, Database = sqlx::Any>,
 {
+    if never_stored(engine, id) {
+        return Err(no_session(id));
+    }
     sqlx::query("SELECT seq FROM sessions WHERE id = $1")
         .bind(id)
         .fetch_optional(exec)
         .await?
         .map(|r| r.get(0))
-        .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))
+        .ok_or_else(|| no_session(id))
 }
 
 /// The session as it would be posted again: its set-up and the current version of each run.
@@ -155,11 +162,14 @@ async fn load_with(
     id: &str,
     sql: std::borrow::Cow<'static, str>,
 ) -> Result<(i64, Session), StoreError> {
+    if never_stored(Engine::of_conn(conn), id) {
+        return Err(no_session(id));
+    }
     let row = sqlx::query(&sql)
         .bind(id)
         .fetch_optional(&mut *conn)
         .await?
-        .ok_or_else(|| StoreError::NotFound(format!("no session has the id '{id}'")))?;
+        .ok_or_else(|| no_session(id))?;
     let seq: i64 = row.get("seq");
     let mut session: Session = serde_json::from_str(row.get("setup"))?;
     session.runs = runs::current(&mut *conn, seq).await?;
@@ -168,15 +178,16 @@ async fn load_with(
 
 /// Delete a session with its runs and solutions.
 pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
+    if never_stored(db.engine, id) {
+        return Err(no_session(id));
+    }
     let mut tx = db.begin_write().await?;
     let done = sqlx::query("DELETE FROM sessions WHERE id = $1")
         .bind(id)
         .execute(&mut *tx)
         .await?;
     if done.rows_affected() == 0 {
-        return Err(StoreError::NotFound(format!(
-            "no session has the id '{id}'"
-        )));
+        return Err(no_session(id));
     }
     tx.commit().await?;
     Ok(())

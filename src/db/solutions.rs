@@ -114,7 +114,7 @@ pub async fn list(
     limit: i64,
     offset: i64,
 ) -> Result<(Vec<StoredSolution>, i64), StoreError> {
-    let seq = sessions::seq_of(&db.pool, id).await?;
+    let seq = sessions::seq_of(&db.pool, db.engine, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
          FROM solutions WHERE session_seq = $1 ORDER BY seq LIMIT $2 OFFSET $3",

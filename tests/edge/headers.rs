@@ -141,7 +141,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
     let long_target = format!("/api/v1/sessions/{}", "a".repeat(10_000));
     let many_headers: String = (0..150).map(|i| format!("X-Filler-{i}: {i}\r\n")).collect();
     let big_header = format!("X-Big: {}\r\n", "b".repeat(40_000));
-    // (what, request target, extra header lines, status, code)
+    // (what, request target, extra header lines, status, code, field)
     let cases = [
         (
             "a 10 kB request target",
@@ -149,6 +149,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
             "",
             414,
             "uri_too_long",
+            None,
         ),
         (
             "150 header fields",
@@ -156,6 +157,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
             many_headers.as_str(),
             431,
             "headers_too_large",
+            None,
         ),
         (
             "a 40 kB header",
@@ -163,6 +165,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
             big_header.as_str(),
             431,
             "headers_too_large",
+            None,
         ),
         (
             "a session id that is not UTF-8",
@@ -170,6 +173,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
             "",
             400,
             "bad_request",
+            Some("id"),
         ),
         (
             "a method the path does not have",
@@ -177,9 +181,10 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
             "",
             405,
             "method_not_allowed",
+            None,
         ),
     ];
-    for (what, target, extra, status, code) in cases {
+    for (what, target, extra, status, code, field) in cases {
         let method = if status == 405 { "DELETE" } else { "GET" };
         let request = format!(
             "{method} {target} HTTP/1.1\r\nHost: {addr}\r\n{extra}Connection: close\r\n\r\n"
@@ -187,6 +192,7 @@ async fn protocol_level_errors_carry_the_contract_error_body() {
         let answer = exchange(addr, request.as_bytes()).await.expect("an answer");
         assert_eq!(answer.status, status, "{what}");
         assert_eq!(answer.json()["error"]["code"], code, "{what}");
+        assert_eq!(answer.json()["error"]["field"].as_str(), field, "{what}");
         assert!(
             answer
                 .header("content-type")

@@ -64,14 +64,27 @@ pub async fn json_error_body(resp: Response) -> Response {
         .filter(|s| !s.is_empty() && s.len() <= 500);
     let status = parts.status;
     let (code, default) = describe(status);
-    let json =
-        ApiError::new(status, code, text.unwrap_or_else(|| default.to_string())).into_response();
+    let field = text.as_deref().and_then(path_parameter);
+    let mut error = ApiError::new(status, code, text.unwrap_or_else(|| default.to_string()));
+    if let Some(field) = field {
+        error = error.with_field(field);
+    }
+    let json = error.into_response();
     let (json_parts, json_body) = json.into_parts();
     parts.headers.remove(header::CONTENT_LENGTH);
     for (name, value) in json_parts.headers.iter() {
         parts.headers.insert(name.clone(), value.clone());
     }
     Response::from_parts(parts, Body::new(json_body))
+}
+
+/// The path parameter a path's rejection names ("Invalid URL: Invalid UTF-8
+/// in `id`"), which is the field at fault.
+fn path_parameter(text: &str) -> Option<String> {
+    let rest = text.strip_prefix("Invalid URL: ")?;
+    let name = rest.split_once(" in `")?.1.split_once('`')?.0;
+    let plain = !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    plain.then(|| name.to_string())
 }
 
 /// The contract's code and a default message for a bare status.
@@ -147,5 +160,16 @@ mod tests {
             value["error"]["message"],
             "Invalid URL: bad percent-encoding"
         );
+        assert!(value["error"].get("field").is_none());
+    }
+
+    #[test]
+    fn a_path_rejection_names_its_parameter_as_the_field() {
+        assert_eq!(
+            path_parameter("Invalid URL: Invalid UTF-8 in `run_id`").as_deref(),
+            Some("run_id")
+        );
+        assert_eq!(path_parameter("Invalid UTF-8 in `id`"), None);
+        assert_eq!(path_parameter("Invalid URL: in `a b`"), None);
     }
 }

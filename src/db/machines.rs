@@ -21,12 +21,18 @@ use crate::balancing::model::{Rotor, Session};
 #[serde(remote = "Self")]
 #[serde(deny_unknown_fields)]
 pub struct NewMachine {
+    /// 1 to 64 characters, none a control character; compared exactly (case
+    /// and Unicode form matter). Never reused for other coefficients: a
+    /// machine created again under a deleted one's id numbers its
+    /// coefficient versions on from that one's.
     pub id: String,
-    /// Optional: a machine may be known by its id alone.
+    /// Optional: a machine may be known by its id alone. 1 to 200
+    /// characters, not blank; no control character but tab and line breaks.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rotor: Option<Rotor>,
+    /// At most 10,000 characters; no control character but tab and line breaks.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub notes: Option<String>,
 }

@@ -3,7 +3,8 @@
 //! SQLite stored it) or another control character is refused with 422 naming
 //! the field; a lookup by such a key finds nothing (404, or the field's 422),
 //! never a 500; and what was stored before these rules stays readable and
-//! writable.
+//! writable. Timestamps, the strings the service stores itself, have one
+//! form on both.
 
 use crate::common;
 
@@ -288,4 +289,75 @@ async fn what_was_stored_before_the_rules_stays_readable_and_writable() {
         assert_eq!(status, 204, "{m:?}");
     }
     server.shutdown().await;
+}
+
+/// `YYYY-MM-DDTHH:MM:SS.mmmZ`: UTC, milliseconds, as both engines' defaults write it.
+fn is_utc_millis(t: &Value) -> bool {
+    let Some(t) = t.as_str() else {
+        return false;
+    };
+    let b = t.as_bytes();
+    let digits = |r: std::ops::Range<usize>| r.clone().all(|i| b[i].is_ascii_digit());
+    b.len() == 24
+        && digits(0..4)
+        && b[4] == b'-'
+        && digits(5..7)
+        && b[7] == b'-'
+        && digits(8..10)
+        && b[10] == b'T'
+        && digits(11..13)
+        && b[13] == b':'
+        && digits(14..16)
+        && b[16] == b':'
+        && digits(17..19)
+        && b[19] == b'.'
+        && digits(20..23)
+        && b[23] == b'Z'
+}
+
+#[tokio::test]
+async fn every_stored_timestamp_is_utc_with_milliseconds_on_either_engine() {
+    let (_dir, server, client) = fresh_server().await;
+    let mut s = pump();
+    s["machine"] = json!("M");
+    post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "M"}),
+    )
+    .await;
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &s).await;
+    let id = created["id"].as_str().unwrap();
+    let base = format!("/api/v1/sessions/{id}");
+    let solution = common::store_solution(&client, &server, id).await;
+    let (_, _, version) = post(
+        &client,
+        &server.url("/api/v1/machines/M/coefficients"),
+        &json!({"sessions": [id]}),
+    )
+    .await;
+    let (_, _, sessions) = send(client.get(server.url("/api/v1/sessions"))).await;
+    let (_, _, machines) = send(client.get(server.url("/api/v1/machines"))).await;
+    let (_, _, machine) = send(client.get(server.url("/api/v1/machines/M"))).await;
+    let (_, _, versions) =
+        send(client.get(server.url(&format!("{base}/runs/zero/versions")))).await;
+    let (_, _, solutions) = send(client.get(server.url(&format!("{base}/solutions")))).await;
+    let stamps = [
+        ("solution", &solution["created_at"]),
+        ("coefficient version", &version["created_at"]),
+        ("session list", &sessions["sessions"][0]["created_at"]),
+        ("machine list", &machines["machines"][0]["created_at"]),
+        ("machine", &machine["created_at"]),
+        ("machine session", &machine["sessions"][0]["created_at"]),
+        (
+            "machine session solved",
+            &machine["sessions"][0]["solved_at"],
+        ),
+        ("machine version", &machine["coefficients"][0]["created_at"]),
+        ("run version", &versions[0]["created_at"]),
+        ("solution list", &solutions[0]["created_at"]),
+    ];
+    for (what, t) in stamps {
+        assert!(is_utc_millis(t), "{what}: {t}");
+    }
 }

@@ -127,3 +127,46 @@ async fn machine_ids_with_control_characters_are_refused_naming_the_field() {
         assert_eq!((status, got["id"].as_str()), (200, Some(id)));
     }
 }
+
+#[tokio::test]
+async fn versions_pooled_while_the_machine_is_deleted_and_created_again_never_repeat_a_number() {
+    let (_dir, server, client) = fresh_server().await;
+    let machines = server.url("/api/v1/machines");
+    post(&client, &machines, &json!({"id": "R"})).await;
+    let s = store(&client, &server, &job_session("R", 54)).await;
+    let url = server.url("/api/v1/machines/R/coefficients");
+    let poolers: Vec<_> = (0..3)
+        .map(|_| {
+            let (client, url, s) = (client.clone(), url.clone(), s.clone());
+            tokio::spawn(async move {
+                let mut got = Vec::new();
+                for _ in 0..6 {
+                    let (status, _, body) = post(&client, &url, &json!({"sessions": [s]})).await;
+                    // 404 while the machine is deleted; nothing else.
+                    assert!(status == 201 || status == 404, "{status}: {body}");
+                    if status == 201 {
+                        got.push(body["version"].as_i64().unwrap());
+                    }
+                }
+                got
+            })
+        })
+        .collect();
+    for _ in 0..6 {
+        send(client.delete(server.url("/api/v1/machines/R"))).await;
+        post(&client, &machines, &json!({"id": "R"})).await;
+    }
+    let mut versions = Vec::new();
+    for p in poolers {
+        versions.extend(p.await.unwrap());
+    }
+    versions.push(
+        pool(&client, &server, "R", &s).await["version"]
+            .as_i64()
+            .unwrap(),
+    );
+    let n = versions.len();
+    versions.sort_unstable();
+    versions.dedup();
+    assert_eq!(versions.len(), n, "a number given twice: {versions:?}");
+}

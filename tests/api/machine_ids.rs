@@ -170,3 +170,18 @@ async fn versions_pooled_while_the_machine_is_deleted_and_created_again_never_re
     versions.dedup();
     assert_eq!(versions.len(), n, "a number given twice: {versions:?}");
 }
+
+#[tokio::test]
+async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id() {
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/sessions");
+    let long = "M".repeat(65);
+    let (status, _, err) = post(&client, &url, &job_session(&long, 55)).await;
+    assert_eq!(status, 422, "{err}");
+    assert_eq!(err["error"]["field"], "machine");
+    let (_, _, list) = send(client.get(&url)).await;
+    assert_eq!(list["total"], 0, "nothing stored");
+    let longest = "\u{e9}".repeat(64);
+    let (status, _, body) = post(&client, &url, &job_session(&longest, 55)).await;
+    assert_eq!(status, 201, "64 characters are an id: {body}");
+}

@@ -65,6 +65,16 @@ pub fn check_session(s: &Session) -> Result<(), InputError> {
     check_text(|| "name".into(), &s.name)?;
     if let Some(m) = &s.machine {
         check_id(|| "machine".into(), m)?;
+        // The core allows any short text; a stored session's machine is
+        // looked up as a machine's id, which has at most 64 characters.
+        let n = m.chars().count();
+        if n > 64 {
+            return Err(InputError::invalid(
+                "invalid_value",
+                "machine",
+                format!("a machine id has 1 to 64 characters; this one has {n}"),
+            ));
+        }
     }
     for (i, p) in s.planes.iter().enumerate() {
         check_id(|| format!("planes[{i}].id"), &p.id)?;

@@ -1,5 +1,7 @@
 //! The HTTP API against the real server: bad requests and their error bodies,
-//! machines and their coefficient versions, the OpenAPI document, runs of a
+//! machines and their coefficient versions (numbers never reused under an
+//! id), the strings and timestamps stored alike on both engines
+//! (`stored_text`), the OpenAPI document, runs of a
 //! stored session, what a job and its runs are (`records`), the `fieldbal serve` binary, service behaviour (request ids,
 //! body limits, time limits) and sessions. `scripts/test.sh` runs this whole
 //! binary a second time with the server on PostgreSQL.

@@ -71,8 +71,20 @@ pub struct FreeDecayRequest {
 /// The estimated oscillator `y'' + (c/m) y + (b/m) f(y') = 0`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct FreeDecay {
-    /// Undamped natural frequency `ω0/2π`.
+    /// Undamped natural frequency `ω0/2π` (the contract's field; the same as
+    /// `undamped_frequency_hz`).
     pub frequency_hz: f64,
+    /// Undamped natural frequency `ω0/2π`, Hz: `√(c/m)/2π`.
+    pub undamped_frequency_hz: f64,
+    /// Damped natural frequency `ω_d/2π`, Hz: the frequency of the decaying
+    /// oscillation, the one a spectrum shows. Viscous: `ω0·√(1 − ζ²)/2π`;
+    /// turbulent: the same as the undamped one (the averaged solution (7.2)
+    /// oscillates at `ω0`: the damping shifts it only at second order).
+    pub damped_frequency_hz: f64,
+    /// Viscous only: the damping ratio `ζ = n/ω0` (`b/m = 2ζω0`). Absent for
+    /// turbulent damping, whose equivalent ratio depends on the amplitude.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_ratio: Option<f64>,
     /// `ω0²`, 1/s².
     pub c_over_m: f64,
     /// Viscous: `2n` (1/s); turbulent: `μ` (1/unit of y).
@@ -140,6 +152,9 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
     // the RMS misfit, answered as null (fuzzing, session 15).
     let all = [
         got.frequency_hz,
+        got.undamped_frequency_hz,
+        got.damped_frequency_hz,
+        got.damping_ratio.unwrap_or(0.0),
         got.c_over_m,
         got.b_over_m,
         got.decrement,
@@ -237,8 +252,12 @@ fn viscous(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     }));
     let c_over_m = wd * wd + n * n;
     let growth = (-n * (y.len() - 1) as f64 * tau).exp();
+    let w0 = c_over_m.sqrt();
     let got = FreeDecay {
-        frequency_hz: c_over_m.sqrt() / std::f64::consts::TAU,
+        frequency_hz: w0 / std::f64::consts::TAU,
+        undamped_frequency_hz: w0 / std::f64::consts::TAU,
+        damped_frequency_hz: wd / std::f64::consts::TAU,
+        damping_ratio: Some(n / w0),
         c_over_m,
         b_over_m: 2.0 * n,
         decrement: std::f64::consts::TAU * n / wd,
@@ -282,6 +301,9 @@ fn turbulent(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     }));
     let got = FreeDecay {
         frequency_hz: w / std::f64::consts::TAU,
+        undamped_frequency_hz: w / std::f64::consts::TAU,
+        damped_frequency_hz: w / std::f64::consts::TAU,
+        damping_ratio: None,
         c_over_m: w * w,
         b_over_m: 3.0 * decrement / (8.0 * amplitude),
         decrement,

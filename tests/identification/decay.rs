@@ -207,3 +207,45 @@ fn a_noise_sweep_shows_the_estimates_degrading_with_the_noise() {
         }
     }
 }
+
+/// `frequency_hz` is the undamped `ω0/2π` (the contract's); a technician
+/// comparing with a spectrum reads the damped `ω_d/2π`. At ζ = 0.2 they differ
+/// by 2 % (`√(1 − ζ²)` = 0.980): the answer names both, read here by name as a
+/// client does, from a closed-form viscous decay.
+#[test]
+fn a_well_damped_decay_names_its_damped_and_undamped_frequencies() {
+    let (f0, zeta, tau) = (3.0_f64, 0.2_f64, 0.02);
+    let w0 = std::f64::consts::TAU * f0;
+    let (n, wd) = (zeta * w0, w0 * (1.0 - zeta * zeta).sqrt());
+    let samples: Vec<f64> = (0..60)
+        .map(|k| {
+            let t = k as f64 * tau;
+            1.5 * (-n * t).exp() * (wd * t + 0.3).cos()
+        })
+        .collect();
+    let got = serde_json::to_value(fit(&samples, tau, DampingLaw::Viscous)).unwrap();
+    let num = |key: &str| {
+        got[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("no number {key}: {got}"))
+    };
+    let fd = wd / std::f64::consts::TAU;
+    assert!(err(num("frequency_hz"), f0) < 1e-9, "{got}");
+    assert!(err(num("undamped_frequency_hz"), f0) < 1e-9, "{got}");
+    assert!(err(num("damped_frequency_hz"), fd) < 1e-9, "{got}");
+    assert!(err(num("damping_ratio"), zeta) < 1e-9, "{got}");
+    // Measurably different: 2 % apart, far beyond the fit's 1e-9.
+    assert!(err(fd, f0) > 0.015);
+}
+
+/// Turbulent damping does not shift the frequency to first order (the averaged
+/// solution oscillates at ω0): both frequencies are the fitted one.
+#[test]
+fn a_turbulent_decay_gives_one_frequency_for_damped_and_undamped() {
+    let got =
+        serde_json::to_value(fit(&turbulent_decay(0.2, 21), 0.2, DampingLaw::Turbulent)).unwrap();
+    let f = got["frequency_hz"].as_f64().unwrap();
+    assert!(err(f, C_M.sqrt() / std::f64::consts::TAU) < 1e-3, "{got}");
+    assert_eq!(got["damped_frequency_hz"].as_f64(), Some(f), "{got}");
+    assert_eq!(got["undamped_frequency_hz"].as_f64(), Some(f), "{got}");
+}

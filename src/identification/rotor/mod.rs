@@ -294,6 +294,10 @@ fn fit_one(
         fit.m
     };
     let k = m_abs / fit.m;
+    // An unresolved damping gives no damping or cross-coupling coefficient:
+    // the fitted ones were noise, a negative damping among them (review,
+    // session 20); the damping ratio's bound says what the readings allow.
+    let resolved = !damping.bounds;
     out.results.push(RotorResult {
         sensor: sensor.id.clone(),
         plane: plane.id.clone(),
@@ -312,12 +316,12 @@ fn fit_one(
         fit_rms_relative,
         speeds: rows.len(),
         c_over_m: fit.c / fit.m,
-        b_over_m: fit.b / fit.m,
-        q_over_m: fit.q / fit.m,
+        b_over_m: resolved.then_some(fit.b / fit.m),
+        q_over_m: resolved.then_some(fit.q / fit.m),
         mass_kg: absolute.then_some(m_abs),
         stiffness_n_per_m: absolute.then_some(fit.c * k),
-        damping_n_s_per_m: absolute.then_some(fit.b * k),
-        cross_coupling_n_per_m: absolute.then_some(fit.q * k),
+        damping_n_s_per_m: (absolute && resolved).then_some(fit.b * k),
+        cross_coupling_n_per_m: (absolute && resolved).then_some(fit.q * k),
     });
     Ok(())
 }

@@ -104,11 +104,19 @@ pub struct RotorResult {
     pub fit_rms_relative: f64,
     /// Speed points fitted.
     pub speeds: usize,
-    /// `c/m` (1/s²), `b/m` (1/s), `q/m` (1/s², its constant part).
+    /// `c/m` (1/s²).
     pub c_over_m: f64,
-    pub b_over_m: f64,
-    pub q_over_m: f64,
-    /// Absolute parameters, when the plane's radius makes the unbalance known.
+    /// `b/m` (1/s) and `q/m` (1/s², its constant part). Absent when the
+    /// damping is unresolved (`damping_ratio_bound` `upper`): the fitted
+    /// ones are then noise (a little below zero, or large and cancelling in
+    /// `b − q/ω_n`), and the damping ratio's bound is all the readings tell.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub b_over_m: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_over_m: Option<f64>,
+    /// Absolute parameters, when the plane's radius makes the unbalance known
+    /// (damping and cross-coupling not when the damping is unresolved, as
+    /// `b_over_m` and `q_over_m`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass_kg: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

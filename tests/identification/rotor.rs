@@ -412,3 +412,48 @@ fn an_unresolved_damping_gives_no_damping_coefficient_and_never_a_negative_one()
         }
     }
 }
+
+/// Whether the answer's damping covers the truth: a resolved ratio within its
+/// resolution of it, an unresolved one (an upper bound) at or above it.
+fn covers(r: &serde_json::Value, zeta_true: f64) -> bool {
+    let zeta = num(r, "damping_ratio");
+    if r.get("damping_ratio_bound").is_some() {
+        zeta >= zeta_true
+    } else {
+        (zeta - zeta_true).abs() <= num(r, "damping_ratio_resolution")
+    }
+}
+
+/// The resolution is "about 95 %": with few speeds the noise it is built on is
+/// itself estimated from a residual of few degrees of freedom (three speeds,
+/// six equations, five unknowns: one), and twice the standard deviation
+/// missed the true damping in 18 % of 200 noisy records, once by 7.7 times
+/// the resolution (review, session 20). Student's quantile for those degrees
+/// of freedom keeps the misses near 5 % at three speeds as at many.
+#[test]
+fn the_damping_resolution_covers_the_truth_about_95_percent_of_the_time_even_at_three_speeds() {
+    let rotor = Jeffcott {
+        sensor_turn: -0.4,
+        ..Jeffcott::with(150.0, 2450.0, 0.05)
+    };
+    for grid in [vec![2000.0, 2400.0, 2800.0], speeds(1200.0, 3600.0, 25)] {
+        let seeds = 200;
+        let missed = (1..=seeds)
+            .filter(|&seed| {
+                let s = session(&[rotor], &grid, Unit::UmPp, 0.02, seed);
+                let out = answer(&RotorRequest {
+                    session: s,
+                    options: RotorOptions::default(),
+                });
+                !covers(&out["results"][0], rotor.zeta())
+            })
+            .count();
+        println!("{} speeds: {missed} of {seeds} missed", grid.len());
+        // 95 % of 200: 10 expected, binomial standard deviation 3.
+        assert!(
+            missed <= 18,
+            "{} speeds: {missed} of {seeds} missed",
+            grid.len()
+        );
+    }
+}

@@ -23,6 +23,7 @@
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 mod damping;
+mod student;
 mod wire;
 
 pub use wire::{

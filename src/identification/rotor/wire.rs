@@ -73,8 +73,10 @@ pub struct RotorResult {
     /// Of the forward mode at the critical: `(b − q/ω_n) / (2√(cm))` (`b/(2√(cm))` without cross-coupling).
     /// With `damping_ratio_bound` `upper`, the most the readings allow instead.
     pub damping_ratio: f64,
-    /// The smallest damping ratio these readings tell from zero: twice the
-    /// standard deviation of the fitted one (absent when it cannot be had).
+    /// The smallest damping ratio these readings tell from zero: the 95 %
+    /// half-width of the fitted one, its standard deviation times Student's
+    /// quantile for the residual's degrees of freedom (absent when it cannot
+    /// be had).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub damping_ratio_resolution: Option<f64>,
     /// `upper` when the fitted damping ratio is within its resolution of zero:

@@ -118,6 +118,63 @@ impl Fit {
     /// are not resolved at all (no degrees of freedom, `J` rank-deficient).
     pub fn damping_ratio_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
         let (q_free, m_free, u_free) = free(setup);
+        // ζ = (1−κ) b / (2√(cm)) − q / (2c): its gradient in the columns' order.
+        let one_k = 1.0 - self.kappa;
+        let (c, bb, q, m) = (self.c, self.b, self.q, self.m);
+        let root = (c * m).sqrt();
+        let mut g = vec![
+            -one_k * bb / (4.0 * c * root) + q / (2.0 * c * c),
+            one_k / (2.0 * root),
+        ];
+        if q_free {
+            g.push(-1.0 / (2.0 * c));
+        }
+        if m_free {
+            g.push(-one_k * bb / (4.0 * m * root));
+        }
+        if u_free {
+            g.extend([0.0, 0.0]);
+        }
+        self.sd_of(setup, points, floor, &g)
+    }
+
+    /// Standard deviation of `b/m`, as [`Fit::damping_ratio_sd`]'s.
+    pub fn b_over_m_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
+        let (q_free, m_free, u_free) = free(setup);
+        let mut g = vec![0.0, 1.0 / self.m];
+        if q_free {
+            g.push(0.0);
+        }
+        if m_free {
+            g.push(-self.b / (self.m * self.m));
+        }
+        if u_free {
+            g.extend([0.0, 0.0]);
+        }
+        self.sd_of(setup, points, floor, &g)
+    }
+
+    /// Standard deviation of `q/m`, as [`Fit::damping_ratio_sd`]'s (0 when
+    /// `q` is not estimated).
+    pub fn q_over_m_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
+        let (q_free, m_free, u_free) = free(setup);
+        if !q_free {
+            return 0.0;
+        }
+        let mut g = vec![0.0, 0.0, 1.0 / self.m];
+        if m_free {
+            g.push(-self.q / (self.m * self.m));
+        }
+        if u_free {
+            g.extend([0.0, 0.0]);
+        }
+        self.sd_of(setup, points, floor, &g)
+    }
+
+    /// Standard deviation of a function of the parameters whose gradient in
+    /// the columns' order is `g` (see [`Fit::damping_ratio_sd`]).
+    fn sd_of(&self, setup: &Setup, points: &[Point], floor: f64, g: &[f64]) -> f64 {
+        let (q_free, m_free, u_free) = free(setup);
         let p = 2 + usize::from(q_free) + usize::from(m_free) + 2 * usize::from(u_free);
         let n = points.len();
         if 2 * n <= p {
@@ -156,23 +213,7 @@ impl Fit {
             noise.push((size, root_w));
         }
         let sigma2 = (relative_ss / (2 * n - p) as f64).max(floor * floor);
-        // ζ = (1−κ) b / (2√(cm)) − q / (2c): its gradient in the columns' order.
-        let (c, bb, q, m) = (self.c, self.b, self.q, self.m);
-        let root = (c * m).sqrt();
-        let mut g = vec![
-            -one_k * bb / (4.0 * c * root) + q / (2.0 * c * c),
-            one_k / (2.0 * root),
-        ];
-        if q_free {
-            g.push(-1.0 / (2.0 * c));
-        }
-        if m_free {
-            g.push(-one_k * bb / (4.0 * m * root));
-        }
-        if u_free {
-            g.extend([0.0, 0.0]);
-        }
-        if !b.iter().chain(&g).all(|x| x.is_finite()) {
+        if g.len() != p || !b.iter().chain(g).all(|x| x.is_finite()) {
             return f64::INFINITY;
         }
         let unscaled = b.clone();

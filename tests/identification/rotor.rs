@@ -320,7 +320,16 @@ fn a_real_damping_is_resolved_and_within_its_resolution_of_the_truth() {
         });
         let r = &out["results"][0];
         assert!(r.get("damping_ratio_bound").is_none(), "{out}");
-        assert!(out.get("warnings").is_none(), "{out}");
+        // No warning but, with the cross-coupling estimated, that the damping
+        // does not split into b and q (see the split's test below).
+        assert!(
+            out.get("warnings").is_none_or(|w| w
+                .as_array()
+                .unwrap()
+                .iter()
+                .all(|w| w["code"] == "damping_split_unresolved")),
+            "{out}"
+        );
         let (zeta, resolution) = (num(r, "damping_ratio"), num(r, "damping_ratio_resolution"));
         assert!(
             (zeta - zeta_true).abs() < resolution && resolution < zeta_true / 5.0,
@@ -454,6 +463,94 @@ fn the_damping_resolution_covers_the_truth_about_95_percent_of_the_time_even_at_
             missed <= 18,
             "{} speeds: {missed} of {seeds} missed",
             grid.len()
+        );
+    }
+}
+
+/// Synchronous readings fix `ωb − q` near the critical, which splits into
+/// direct damping `b` and cross-coupling `q` only through the few per cent
+/// the speed changes across the resonance. With both estimated (the default)
+/// and 2 % noise, 20 records of one rotor (true b/m = 25.7 1/s, q = 0)
+/// answered damping coefficients from 167 to 8207 N·s/m (true 3848) and
+/// cross-coupling from −9.4e5 to 1.1e6 N/m as plain numbers, while the
+/// damping ratio agreed within 4 % (review, session 20). Each is now given
+/// with its 95 % resolution, which covers the truth; where that reaches
+/// zero the split is not resolved: neither is given (a warning says so),
+/// never a negative damping coefficient as a number.
+#[test]
+fn the_split_of_damping_and_cross_coupling_is_given_with_its_resolution_or_not_at_all() {
+    let rotor = Jeffcott {
+        sensor_turn: -0.4,
+        ..Jeffcott::with(150.0, 2450.0, 0.05)
+    };
+    let b_over_m = rotor.damping / rotor.mass_kg;
+    let (mut given, mut missed, mut withheld) = (0, 0, 0);
+    for seed in 1..=40 {
+        let s = session(
+            &[rotor],
+            &speeds(1200.0, 3600.0, 25),
+            Unit::UmPp,
+            0.02,
+            seed,
+        );
+        let out = answer(&RotorRequest {
+            session: s,
+            options: RotorOptions::default(),
+        });
+        let r = &out["results"][0];
+        assert!(r.get("damping_ratio_bound").is_none(), "seed {seed}: {out}");
+        match r.get("b_over_m") {
+            Some(b) => {
+                given += 1;
+                let b = b.as_f64().unwrap();
+                let (rb, rq) = (num(r, "b_over_m_resolution"), num(r, "q_over_m_resolution"));
+                assert!(
+                    b > rb,
+                    "seed {seed}: b/m within its resolution of zero: {out}"
+                );
+                assert!(num(r, "damping_n_s_per_m") > 0.0, "seed {seed}: {out}");
+                if (b - b_over_m).abs() > rb || num(r, "q_over_m").abs() > rq {
+                    missed += 1;
+                }
+            }
+            None => {
+                withheld += 1;
+                for key in ["q_over_m", "damping_n_s_per_m", "cross_coupling_n_per_m"] {
+                    assert!(r.get(key).is_none(), "seed {seed}: {key}: {out}");
+                }
+                assert!(
+                    out["warnings"]
+                        .as_array()
+                        .is_some_and(|w| w.iter().any(|w| w["code"] == "damping_split_unresolved")),
+                    "seed {seed}: {out}"
+                );
+            }
+        }
+    }
+    println!("given {given}, missed {missed}, withheld {withheld}");
+    assert!(missed <= 4, "{missed} of {given} given missed the truth");
+    // With the cross-coupling taken as zero, the damping coefficient is as
+    // well resolved as the damping ratio: given every time, and right.
+    for seed in 1..=8 {
+        let s = session(
+            &[rotor],
+            &speeds(1200.0, 3600.0, 25),
+            Unit::UmPp,
+            0.02,
+            seed,
+        );
+        let out = answer(&RotorRequest {
+            session: s,
+            options: RotorOptions {
+                cross_coupling: Some(fieldbal::identification::rotor::CrossCoupling::Zero),
+                ..Default::default()
+            },
+        });
+        let r = &out["results"][0];
+        let (b, rb) = (num(r, "b_over_m"), num(r, "b_over_m_resolution"));
+        assert!(
+            (b - b_over_m).abs() <= rb && rb < 0.1 * b_over_m,
+            "seed {seed}: {out}"
         );
     }
 }

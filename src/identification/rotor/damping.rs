@@ -39,9 +39,18 @@ pub const NOISE_FLOOR: f64 = 1e-6;
 /// damping in 46 of 200 noisy records, once by 7.7 resolutions (review,
 /// session 20).
 pub fn resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<f64> {
-    let dof = (2 * points.len()).saturating_sub(setup.unknowns());
-    let r = t_95(dof as f64) * fit.damping_ratio_sd(setup, points, NOISE_FLOOR);
+    let t = t_95((2 * points.len()).saturating_sub(setup.unknowns()) as f64);
+    let r = t * fit.damping_ratio_sd(setup, points, NOISE_FLOOR);
     r.is_finite().then_some(r)
+}
+
+/// The 95 % resolutions of `b/m` and `q/m` (as the damping ratio's), when
+/// they can be had; `q/m`'s is 0 when `q` is not estimated.
+pub fn split_resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<(f64, f64)> {
+    let t = t_95((2 * points.len()).saturating_sub(setup.unknowns()) as f64);
+    let rb = t * fit.b_over_m_sd(setup, points, NOISE_FLOOR);
+    let rq = t * fit.q_over_m_sd(setup, points, NOISE_FLOOR);
+    (rb.is_finite() && rq.is_finite()).then_some((rb, rq))
 }
 
 /// The damping and amplification reported for one mode.

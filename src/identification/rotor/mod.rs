@@ -298,7 +298,15 @@ fn fit_one(
     // An unresolved damping gives no damping or cross-coupling coefficient:
     // the fitted ones were noise, a negative damping among them (review,
     // session 20); the damping ratio's bound says what the readings allow.
-    let resolved = !damping.bounds;
+    // Nor does a resolved one whose split into b and q is not: b/m within its
+    // resolution of zero (or below it). With q estimated, 2 % noise gave
+    // damping coefficients from 167 to 8207 N·s/m for a true 3848.
+    let split = damping::split_resolution(&fit, setup, &points);
+    let b_over_m = fit.b / fit.m;
+    let resolved = !damping.bounds && split.is_some_and(|(rb, _)| b_over_m > rb);
+    if !damping.bounds && !resolved {
+        warn(out, "damping_split_unresolved", &plane.id, format!("{label}: the readings give the damping ratio of the mode at {critical:.0} rpm, but cannot split it into direct damping and cross-coupling (b/m {b_over_m:.3e} 1/s, resolution {}); neither coefficient is given. Fit with cross_coupling \"zero\" if the rotor has none, or read more speeds across the resonance", split.map_or("none".to_string(), |(rb, _)| format!("{rb:.2e}"))));
+    }
     out.results.push(RotorResult {
         sensor: sensor.id.clone(),
         plane: plane.id.clone(),
@@ -317,8 +325,10 @@ fn fit_one(
         fit_rms_relative,
         speeds: rows.len(),
         c_over_m: fit.c / fit.m,
-        b_over_m: resolved.then_some(fit.b / fit.m),
+        b_over_m: resolved.then_some(b_over_m),
+        b_over_m_resolution: split.filter(|_| resolved).map(|(rb, _)| rb),
         q_over_m: resolved.then_some(fit.q / fit.m),
+        q_over_m_resolution: split.filter(|_| resolved).map(|(_, rq)| rq),
         mass_kg: absolute.then_some(m_abs),
         stiffness_n_per_m: absolute.then_some(fit.c * k),
         damping_n_s_per_m: (absolute && resolved).then_some(fit.b * k),

@@ -112,10 +112,21 @@ pub struct RotorResult {
     /// damping is unresolved (`damping_ratio_bound` `upper`): the fitted
     /// ones are then noise (a little below zero, or large and cancelling in
     /// `b − q/ω_n`), and the damping ratio's bound is all the readings tell.
+    /// Absent too when the damping ratio is resolved but its split into `b`
+    /// and `q` is not (`b/m` within its resolution of zero, warning
+    /// `damping_split_unresolved`): synchronous readings fix `ωb − q` near the
+    /// critical and split it only through the speed's change across the
+    /// resonance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub b_over_m: Option<f64>,
+    /// 95 % half-width of `b_over_m` (as `damping_ratio_resolution`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub b_over_m_resolution: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub q_over_m: Option<f64>,
+    /// 95 % half-width of `q_over_m` (0 when `q` is not estimated).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_over_m_resolution: Option<f64>,
     /// Absolute parameters, when the plane's radius makes the unbalance known
     /// (damping and cross-coupling not when the damping is unresolved, as
     /// `b_over_m` and `q_over_m`).
@@ -134,7 +145,9 @@ pub struct RotorResult {
 pub struct RotorIdentification {
     pub results: Vec<RotorResult>,
     /// `poor_fit` (several modes in range?), `critical_outside_range`, `no_mode`,
-    /// `damping_unresolved` (a damping ratio within its resolution of zero).
+    /// `damping_unresolved` (a damping ratio within its resolution of zero),
+    /// `damping_split_unresolved` (a damping ratio resolved, its split into
+    /// direct damping and cross-coupling not).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Warning>,
 }

@@ -138,6 +138,24 @@ impl Fit {
         self.sd_of(setup, points, floor, &g)
     }
 
+    /// Standard deviation of the natural frequency `√(c/m)` (1/s), as
+    /// [`Fit::damping_ratio_sd`]'s.
+    pub fn natural_w_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
+        let (q_free, m_free, u_free) = free(setup);
+        let wn = self.natural_w();
+        let mut g = vec![1.0 / (2.0 * self.m * wn), 0.0];
+        if q_free {
+            g.push(0.0);
+        }
+        if m_free {
+            g.push(-wn / (2.0 * self.m));
+        }
+        if u_free {
+            g.extend([0.0, 0.0]);
+        }
+        self.sd_of(setup, points, floor, &g)
+    }
+
     /// Standard deviation of `b/m`, as [`Fit::damping_ratio_sd`]'s.
     pub fn b_over_m_sd(&self, setup: &Setup, points: &[Point], floor: f64) -> f64 {
         let (q_free, m_free, u_free) = free(setup);

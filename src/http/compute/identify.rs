@@ -26,7 +26,7 @@ async fn blocking<T: Send + 'static>(
 #[utoipa::path(post, path = "/api/v1/identify/rotor", tag = "identification",
     request_body = RotorRequest,
     responses(
-        (status = 200, description = "Per sensor and plane: critical speed, damping ratio and its resolution, API 684 amplification factor and separation margin; a damping ratio within its resolution of zero is given as an upper bound (`damping_ratio_bound`), the factor as a lower one, with a `damping_unresolved` warning and no damping or cross-coupling coefficient; these come with their 95 % resolutions, or not at all when their split is unresolved (`damping_split_unresolved`)", body = RotorIdentification),
+        (status = 200, description = "Per sensor and plane: critical speed and its resolution (`critical_speed_resolution_rpm`, 95 %), damping ratio and its resolution, API 684 amplification factor and separation margin; a damping ratio within its resolution of zero is given as an upper bound (`damping_ratio_bound`), the factor as a lower one, with a `damping_unresolved` warning and no damping or cross-coupling coefficient; these come with their 95 % resolutions, or not at all when their split is unresolved (`damping_split_unresolved`)", body = RotorIdentification),
         MalformedJson,
         (status = 422, description = "Invalid session or options (a `speed_range_rpm` not `[lo, hi]` with lo < hi, each 1 to 1e6 rpm; an empty `sensors` or `planes`, an unknown or repeated id in them), too few speeds", body = ErrorBody),
         SolverBusy,

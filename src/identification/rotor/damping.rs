@@ -44,6 +44,14 @@ pub fn resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<f64> {
     r.is_finite().then_some(r)
 }
 
+/// The 95 % half-width of the natural frequency `√(c/m)`, 1/s, when it can
+/// be had.
+pub fn natural_w_resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<f64> {
+    let t = t_95((2 * points.len()).saturating_sub(setup.unknowns()) as f64);
+    let r = t * fit.natural_w_sd(setup, points, NOISE_FLOOR);
+    r.is_finite().then_some(r)
+}
+
 /// The 95 % resolutions of `b/m` and `q/m` (as the damping ratio's), when
 /// they can be had; `q/m`'s is 0 when `q` is not estimated.
 pub fn split_resolution(fit: &Fit, setup: &Setup, points: &[Point]) -> Option<(f64, f64)> {

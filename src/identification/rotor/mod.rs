@@ -311,6 +311,8 @@ fn fit_one(
         sensor: sensor.id.clone(),
         plane: plane.id.clone(),
         critical_speed_rpm: critical,
+        critical_speed_resolution_rpm: damping::natural_w_resolution(&fit, setup, &points)
+            .map(|r| r * to_rpm),
         damping_ratio: damping.ratio,
         damping_ratio_resolution: damping.resolution,
         damping_ratio_bound: damping.bounds.then(|| "upper".into()),

@@ -70,6 +70,10 @@ pub struct RotorResult {
     pub plane: String,
     /// Undamped critical speed `√(c/m)`, rpm.
     pub critical_speed_rpm: f64,
+    /// 95 % half-width of `critical_speed_rpm` (as `damping_ratio_resolution`;
+    /// absent when it cannot be had).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub critical_speed_resolution_rpm: Option<f64>,
     /// Of the forward mode at the critical: `(b − q/ω_n) / (2√(cm))` (`b/(2√(cm))` without cross-coupling).
     /// With `damping_ratio_bound` `upper`, the most the readings allow instead.
     pub damping_ratio: f64,

@@ -23,7 +23,7 @@
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 mod damping;
-mod student;
+pub(crate) mod student;
 mod wire;
 
 pub use wire::{

@@ -128,6 +128,41 @@ async fn bad_input_is_refused_with_the_field_named() {
             422,
             "samples",
         ),
+        // Samples the decay models cannot fit (a constant, a lone spike, an
+        // alternation at the Nyquist rate) answered `unidentifiable` naming
+        // no field (review, session 20).
+        (
+            "constant samples",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                v["samples"] = json!(vec![1.0; 30])
+            }),
+            422,
+            "samples",
+        ),
+        (
+            "a lone spike, turbulent",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                let mut y = vec![0.0; 30];
+                y[29] = 1.0;
+                v["samples"] = json!(y);
+                v["damping"] = json!("turbulent");
+            }),
+            422,
+            "samples",
+        ),
+        (
+            "alternating samples",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                v["samples"] = json!((0..30)
+                    .map(|k| if k % 2 == 0 { 1.0 } else { -1.0 })
+                    .collect::<Vec<f64>>())
+            }),
+            422,
+            "samples",
+        ),
         (
             "unknown law",
             "free-decay",

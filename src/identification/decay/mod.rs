@@ -158,7 +158,13 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
     let (got, theta, growth) = match req.damping {
         DampingLaw::Viscous => viscous(&req.samples, req.dt_s),
         DampingLaw::Turbulent => turbulent(&req.samples, req.dt_s),
-    }?;
+    }
+    // The fits' own refusals (a constant record is `unidentifiable`) named
+    // no field (review, session 20): it is the samples they could not fit.
+    .map_err(|e| InputError {
+        field: e.field.or_else(|| Some("samples".into())),
+        ..e
+    })?;
     // A sample of 1e150 beside ones of order 1 passed the fit and overflowed
     // the RMS misfit, answered as null (fuzzing, session 15).
     let all = [

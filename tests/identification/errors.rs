@@ -82,6 +82,24 @@ async fn bad_input_is_refused_with_the_field_named() {
             422,
             "session.runs",
         ),
+        // The one-mass fit's refusals named no field (review, session 20).
+        (
+            "a trial that changed nothing",
+            "rotor",
+            rotor_with(|v| {
+                let reference = v["session"]["runs"][0]["readings"].clone();
+                v["session"]["runs"][1]["readings"] = reference;
+            }),
+            422,
+            "session.runs[1].readings",
+        ),
+        (
+            "a tied cross-coupling that cancels the damping",
+            "rotor",
+            rotor_with(|v| v["options"]["cross_coupling_ratio"] = json!(1.0)),
+            422,
+            "options.cross_coupling_ratio",
+        ),
         (
             "unknown option",
             "rotor",

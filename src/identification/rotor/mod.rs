@@ -244,11 +244,27 @@ fn fit_one(
             z: w[(a, p)] * displacement_per_unit(unit, omega(a)) / scale,
         })
         .collect();
+    // The fit's own refusals named no field (review, session 20): a tied
+    // cross-coupling of κ = 1 leaves no damping term (ωb − κbω = 0), so the
+    // option is at fault; otherwise the plane's trial runs, whose readings
+    // gave coefficients the model cannot fit (a trial that changed nothing).
+    let field = if matches!(setup.coupling, Coupling::Tied(k) if (1.0 - k).abs() < 1e-9) {
+        "options.cross_coupling_ratio".to_string()
+    } else {
+        session
+            .runs
+            .iter()
+            .position(|r| r.weights.iter().any(|w| w.plane == plane.id))
+            .map_or("session.runs".to_string(), |r| {
+                format!("session.runs[{r}].readings")
+            })
+    };
     let fit = onemass::fit(setup, &points).map_err(|e| InputError {
         message: format!(
             "sensor '{}', plane '{}': {}",
             sensor.id, plane.id, e.message
         ),
+        field: e.field.or(Some(field)),
         ..e
     })?;
     let label = format!("sensor '{}', plane '{}'", sensor.id, plane.id);

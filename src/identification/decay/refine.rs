@@ -1,4 +1,5 @@
-//! The output-error fit of a viscous decay, started from the recurrence (7.1).
+//! The output-error fit of a decay, started from the linear discrete models
+//! (7.1 viscous, 7.2 turbulent).
 //!
 //! The recurrence `y_k = λ1 y_{k−1} + λ2 y_{k−2}` is exact for exact samples,
 //! but fitted by least squares to noisy ones it has the noise on both sides
@@ -17,71 +18,109 @@ use nalgebra::{DMatrix, DVector};
 
 use super::super::lsq;
 
-/// The fitted decay and the covariance of `(n, ω_d)`.
+/// The envelope of a decay, per step `k`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Envelope {
+    /// `e^{−ν k}`.
+    Exponential,
+    /// `1/(1 + l k)`.
+    Hyperbolic,
+}
+
+impl Envelope {
+    /// The envelope and its derivative in its parameter at step `k`.
+    fn at(self, d: f64, k: f64) -> (f64, f64) {
+        match self {
+            Envelope::Exponential => {
+                let g = (-d * k).exp();
+                (g, -k * g)
+            }
+            Envelope::Hyperbolic => {
+                let g = 1.0 / (1.0 + d * k);
+                (g, -k * g * g)
+            }
+        }
+    }
+}
+
+/// The fitted decay, per step, and the covariance of `(d, θ)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Refined {
-    pub n: f64,
-    pub wd: f64,
+    /// The envelope's parameter: `ν = nτ` or `l`.
+    pub d: f64,
+    /// `θ = ω_d τ`.
+    pub theta: f64,
     /// Sum of squared residuals.
     pub rss: f64,
-    /// Covariance of `(n, ω_d)`: `[[var n, cov], [cov, var ω_d]]`.
+    /// Covariance of `(d, θ)`: `[[var d, cov], [cov, var θ]]`.
     pub cov: [[f64; 2]; 2],
 }
 
-fn model(p: &[f64; 4], t: f64) -> f64 {
-    let [a, b, n, wd] = *p;
-    (-n * t).exp() * (a * (wd * t).cos() + b * (wd * t).sin())
+fn model(e: Envelope, p: &[f64; 4], k: f64) -> f64 {
+    let [a, b, d, theta] = *p;
+    e.at(d, k).0 * (a * (theta * k).cos() + b * (theta * k).sin())
 }
 
-fn rss(y: &[f64], tau: f64, p: &[f64; 4]) -> f64 {
+fn rss(e: Envelope, y: &[f64], p: &[f64; 4]) -> f64 {
     y.iter()
         .enumerate()
-        .map(|(k, &yk)| (yk - model(p, k as f64 * tau)).powi(2))
+        .map(|(k, &yk)| (yk - model(e, p, k as f64)).powi(2))
         .sum()
 }
 
-fn jacobian(y: &[f64], tau: f64, p: &[f64; 4]) -> DMatrix<f64> {
-    let [a, b, n, wd] = *p;
+fn jacobian(e: Envelope, y: &[f64], p: &[f64; 4]) -> DMatrix<f64> {
+    let [a, b, d, theta] = *p;
     DMatrix::from_fn(y.len(), 4, |k, j| {
-        let t = k as f64 * tau;
-        let (e, c, s) = ((-n * t).exp(), (wd * t).cos(), (wd * t).sin());
+        let k = k as f64;
+        let (g, dg) = e.at(d, k);
+        let (c, s) = ((theta * k).cos(), (theta * k).sin());
         match j {
-            0 => e * c,
-            1 => e * s,
-            2 => -t * e * (a * c + b * s),
-            _ => t * e * (b * c - a * s),
+            0 => g * c,
+            1 => g * s,
+            2 => dg * (a * c + b * s),
+            _ => k * g * (b * c - a * s),
         }
     })
 }
 
-/// The least-squares `(a, b)` for a given `(n, ω_d)`.
-fn linear_part(y: &[f64], tau: f64, n: f64, wd: f64) -> Option<[f64; 4]> {
+/// The least-squares `(a, b)` for a given `(d, θ)`.
+fn linear_part(e: Envelope, y: &[f64], d: f64, theta: f64) -> Option<[f64; 4]> {
     let m = DMatrix::from_fn(y.len(), 2, |k, j| {
-        let t = k as f64 * tau;
-        (-n * t).exp()
+        let k = k as f64;
+        e.at(d, k).0
             * if j == 0 {
-                (wd * t).cos()
+                (theta * k).cos()
             } else {
-                (wd * t).sin()
+                (theta * k).sin()
             }
     });
     let ab = lsq::solve(m, &DVector::from_column_slice(y), "the decay's amplitude").ok()?;
-    Some([ab[0], ab[1], n, wd])
+    Some([ab[0], ab[1], d, theta])
 }
 
-/// Refine `(n0, wd0)` by the output-error fit; `None` when it cannot be had
-/// (then the recurrence's answer stands).
-pub fn viscous(y: &[f64], tau: f64, n0: f64, wd0: f64) -> Option<Refined> {
-    let mut p = linear_part(y, tau, n0, wd0)?;
-    let mut cost = rss(y, tau, &p);
+/// Whether `p` is a decay the samples can show: `θ` within `(0, π)` (more
+/// than two samples a period), a hyperbolic envelope positive throughout.
+fn admissible(e: Envelope, p: &[f64; 4], n: usize) -> bool {
+    let ok_theta = p[3] > 0.0 && p[3] < std::f64::consts::PI;
+    ok_theta && (e == Envelope::Exponential || 1.0 + p[2] * (n as f64 - 1.0) > 0.0 && p[2] > -1.0)
+}
+
+/// Refine the start `(d0, θ0)` by the output-error fit; `None` when it
+/// cannot be had (then the linear model's answer stands).
+pub fn fit(e: Envelope, y: &[f64], d0: f64, theta0: f64) -> Option<Refined> {
+    let mut p = linear_part(e, y, d0, theta0)?;
+    if !admissible(e, &p, y.len()) {
+        return None;
+    }
+    let mut cost = rss(e, y, &p);
     let mut mu: f64 = 1e-3;
     for _ in 0..200 {
-        let j = jacobian(y, tau, &p);
+        let j = jacobian(e, y, &p);
         let r = DVector::from_iterator(
             y.len(),
             y.iter()
                 .enumerate()
-                .map(|(k, &yk)| yk - model(&p, k as f64 * tau)),
+                .map(|(k, &yk)| yk - model(e, &p, k as f64)),
         );
         // Marquardt's damping, scaled by each column's size: rows √μ·‖J_j‖.
         let mut a = DMatrix::zeros(y.len() + 4, 4);
@@ -91,12 +130,17 @@ pub fn viscous(y: &[f64], tau: f64, n0: f64, wd0: f64) -> Option<Refined> {
         }
         let mut rhs = DVector::zeros(y.len() + 4);
         rhs.rows_mut(0, y.len()).copy_from(&r);
-        let Ok(d) = lsq::solve(a, &rhs, "the decay's output-error fit") else {
+        let Ok(step) = lsq::solve(a, &rhs, "the decay's output-error fit") else {
             break;
         };
-        let q = [p[0] + d[0], p[1] + d[1], p[2] + d[2], p[3] + d[3]];
-        let next = rss(y, tau, &q);
-        if next.is_finite() && next < cost && q[3] > 0.0 {
+        let q = [
+            p[0] + step[0],
+            p[1] + step[1],
+            p[2] + step[2],
+            p[3] + step[3],
+        ];
+        let next = rss(e, y, &q);
+        if next.is_finite() && next < cost && admissible(e, &q, y.len()) {
             let settled = cost - next <= 1e-14 * cost;
             p = q;
             cost = next;
@@ -111,17 +155,13 @@ pub fn viscous(y: &[f64], tau: f64, n0: f64, wd0: f64) -> Option<Refined> {
             }
         }
     }
-    // ωτ within (0, π): the samples alias otherwise, as for (7.1).
-    if !(p[3] > 0.0 && p[3] * tau < std::f64::consts::PI && cost.is_finite()) {
-        return None;
-    }
     let dof = y.len().saturating_sub(4);
-    if dof == 0 {
+    if dof == 0 || !cost.is_finite() {
         return None;
     }
     let sigma2 = cost / dof as f64;
     // (JᵀJ)⁻¹ = S⁻¹ V Σ⁻² Vᵀ S⁻¹ from the SVD of the column-scaled J.
-    let mut j = jacobian(y, tau, &p);
+    let mut j = jacobian(e, y, &p);
     let scale = lsq::unit_columns(&mut j);
     let svd = j.svd(false, true);
     let vt = svd.v_t?;
@@ -137,8 +177,8 @@ pub fn viscous(y: &[f64], tau: f64, n0: f64, wd0: f64) -> Option<Refined> {
             / (scale[r] * scale[c])
     };
     Some(Refined {
-        n: p[2],
-        wd: p[3],
+        d: p[2],
+        theta: p[3],
         rss: cost,
         cov: [[entry(2, 2), entry(2, 3)], [entry(3, 2), entry(3, 3)]],
     })

@@ -246,8 +246,14 @@ fn amplitude_phase(
     Ok((p[0].hypot(p[1]), wrap_deg((-p[1]).atan2(p[0]).to_degrees())))
 }
 
+/// Amplitude, phase (degrees) and RMS misfit of a decay fitted to samples.
+type Misfit = (f64, f64, f64);
+
+/// Covariance of a decay's envelope parameter and angle per step.
+type Covariance = [[f64; 2]; 2];
+
 /// Amplitude, phase and RMS misfit of `a e^{−nt} cos(ω_d t + ψ)` fitted to `y`.
-fn output_error(y: &[f64], tau: f64, n: f64, wd: f64) -> Result<(f64, f64, f64), InputError> {
+fn output_error(y: &[f64], tau: f64, n: f64, wd: f64) -> Result<Misfit, InputError> {
     let (amplitude, phase_deg) = amplitude_phase(y, wd * tau, |k| (-n * k * tau).exp())?;
     let psi = phase_deg.to_radians();
     let fit_rms = rms(y.iter().enumerate().map(|(k, &yk)| {
@@ -285,7 +291,7 @@ fn recurrence(y: &[f64], tau: f64) -> Result<(f64, f64), InputError> {
 /// start that fits the whole record best is kept (an aliased one fits it
 /// badly), then refined on all samples.
 fn viscous(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
-    let mut best: Option<(f64, f64, (f64, f64, f64))> = None;
+    let mut best: Option<(f64, f64, Misfit)> = None;
     let mut first_error = None;
     let mut stride = 1;
     while y.len() / stride >= MIN_SAMPLES {
@@ -331,7 +337,7 @@ fn viscous(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
     // covariance of (n, ω_d), with Student's quantile for N − 4 degrees of freedom.
     let t = t_95(y.len().saturating_sub(4) as f64);
     let half_width = |g: [f64; 2]| {
-        cov.map(|c: [[f64; 2]; 2]| {
+        cov.map(|c: Covariance| {
             let var = g[0] * g[0] * c[0][0] + 2.0 * g[0] * g[1] * c[0][1] + g[1] * g[1] * c[1][1];
             t * var.max(0.0).sqrt()
         })
@@ -382,7 +388,7 @@ fn turbulent_model(y: &[f64]) -> Result<(f64, f64), InputError> {
 }
 
 /// Amplitude, phase and RMS misfit of `a0 cos(kθ + ψ0)/(1 + l k)` fitted to `y`.
-fn hyperbolic_error(y: &[f64], l: f64, theta: f64) -> Result<(f64, f64, f64), InputError> {
+fn hyperbolic_error(y: &[f64], l: f64, theta: f64) -> Result<Misfit, InputError> {
     let (amplitude, phase_deg) = amplitude_phase(y, theta, |k| 1.0 / (1.0 + l * k))?;
     let psi = phase_deg.to_radians();
     let fit_rms = rms(y.iter().enumerate().map(|(k, &yk)| {
@@ -413,7 +419,7 @@ fn turbulent(y: &[f64], tau: f64) -> Result<Fitted, InputError> {
             }
         }
     }
-    let mut best: Option<(f64, f64, Option<[[f64; 2]; 2]>, (f64, f64, f64))> = None;
+    let mut best: Option<(f64, f64, Option<Covariance>, Misfit)> = None;
     for (l0, theta0, refined) in starts {
         let mut candidates = vec![(l0, theta0, None)];
         if refined {

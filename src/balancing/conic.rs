@@ -2,7 +2,8 @@
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
 //! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
 //! against Clarabel's full program (tests/solve/minmax/equivalence.rs), with
-//! Clarabel again wherever that method's arithmetic fails. Where planes are
+//! Clarabel again wherever that method's arithmetic fails; the min-max answer
+//! is then polished to rounding on its active set (`polish`). Where planes are
 //! undetermined or nearly so, min-max picks the least-mass optimum among the
 //! equally good ones (`least_mass`).
 //!
@@ -21,6 +22,7 @@ mod active_set;
 mod kkt;
 mod least_mass;
 mod loose;
+mod polish;
 mod primal_dual;
 mod program;
 mod soc;
@@ -183,6 +185,14 @@ pub fn solve_cone_with(
         }
     };
     let mut solved = loose::solve(&a_s, &b_s, &bounds, program)?;
+    if objective == Objective::MinMax {
+        // The interior point fixes the peak to its gap but the correction
+        // only to about the gap's square root: Newton on the active set,
+        // taken with a certificate of optimality (`polish`).
+        if let Some(y) = polish::polish(&a_s, &b_s, &bounds, &solved.0) {
+            solved.0 = y;
+        }
+    }
     if least_mass {
         solved = least_mass::refine(&a_s, &b_s, &bounds, &d, solved, limits);
     }

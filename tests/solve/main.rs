@@ -20,6 +20,7 @@ mod textbook;
 mod minmax {
     mod dependent;
     mod equivalence;
+    mod exact;
     mod optimality;
     mod sessions;
     mod support;

@@ -2,10 +2,10 @@
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
 //! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
 //! against Clarabel's full program (tests/solve/minmax/equivalence.rs), with
-//! Clarabel again wherever that method's arithmetic fails; the min-max answer
-//! is then polished to rounding on its active set (`polish`). Where planes are
-//! undetermined or nearly so, min-max picks the least-mass optimum among the
-//! equally good ones (`least_mass`).
+//! Clarabel again wherever that method's arithmetic fails; a min-max answer
+//! is then polished to rounding on its active set (`polish`). Where planes
+//! are undetermined or nearly so, both objectives pick the least-mass
+//! optimum among the equally good ones (`least_mass`).
 //!
 //! The caller hands over the weighted problem `r = b + A x` (rows of `A` and `b`
 //! already multiplied by the row weights, method 3.3) in the internal frame; `solve_cone`
@@ -108,9 +108,10 @@ pub fn solve_cone_within(
 /// [`solve_cone`] for a job whose `A` has the scaled condition number
 /// `condition` (columns at unit norm; the solve's one factorisation): from
 /// [`NEARLY_DEPENDENT`] on, where some plane is undetermined or nearly so and
-/// the first min-max optimum an accident of the solver's path, min-max
-/// returns the optimum of least total squared mass (`least_mass`). Least
-/// squares is unchanged.
+/// the first optimum an accident of the solver's path, the answer is the
+/// optimum of least total squared mass (`least_mass`): for min-max, and for
+/// least squares under a binding bound (unbounded least squares has it from
+/// the pseudo-inverse, without a cone program).
 pub fn solve_cone_conditioned(
     condition: f64,
     a: &DMatrix<Complex64>,
@@ -118,14 +119,14 @@ pub fn solve_cone_conditioned(
     objective: Objective,
     max_abs: &[Option<f64>],
 ) -> Result<ConeSolution, InputError> {
-    let least_mass = objective == Objective::MinMax && condition >= NEARLY_DEPENDENT;
+    let least_mass = condition >= NEARLY_DEPENDENT;
     let (limits, strategy) = (Limits::default(), Strategy::default());
     solve_cone_with(a, b, objective, max_abs, limits, strategy, least_mass)
 }
 
 /// [`solve_cone_within`] with the min-max rows handled by `strategy`; both
 /// give the same answer to the solver's tolerance (tests/solve/minmax/equivalence.rs).
-/// `least_mass` asks min-max for the optimum of least total squared mass
+/// `least_mass` asks for the optimum of least total squared mass
 /// where several are equally good ([`solve_cone_conditioned`] says when).
 pub fn solve_cone_with(
     a: &DMatrix<Complex64>,
@@ -194,7 +195,7 @@ pub fn solve_cone_with(
         }
     }
     if least_mass {
-        solved = least_mass::refine(&a_s, &b_s, &bounds, &d, solved, limits);
+        solved = least_mass::refine(objective, &a_s, &b_s, &bounds, &d, solved, limits);
     }
     let (y, iterations, status) = solved;
     let mut x = DVector::zeros(planes);

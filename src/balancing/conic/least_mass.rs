@@ -1,4 +1,5 @@
-//! Among equally good min-max corrections, the one of least mass.
+//! Among equally good corrections, the one of least mass: min-max, and
+//! least squares under a binding bound (session 20; below).
 //!
 //! When planes are dependent (the sensors see two trial weights alike) the
 //! min-max optimum is not a point but a set: moving mass between the
@@ -49,6 +50,16 @@
 //!   fails, the first answer stands: the choice among optima never costs the
 //!   job its answer.
 //!
+//! Least squares under a bound (session 20): unbounded, it takes the
+//! pseudo-inverse's least-norm answer and never comes here; with a bound
+//! that the least-norm answer breaks it is a cone program, whose answer on
+//! two identical planes was any split of the sum that kept the bound (the
+//! pump's planes with a bound of a quarter of the sum on the inboard one:
+//! 5·10⁻⁸ g / 21.6 g). The same second program moves it to the least-mass
+//! split, with one cap on the residual's 2-norm instead of one per row,
+//! `‖r‖₂ ≤ ‖r₁‖₂ + ε (‖r₁‖₂ + ‖b‖₂)`: the bounded plane at its bound in the
+//! sum's direction, the other plane the rest (5.41 g / 16.22 g).
+//!
 //! Measured (tests/solve/minmax/dependent.rs): the pump with identical
 //! planes and a 1e7 g bound now gives 10.692479 g / 10.692479 g (was
 //! 0.433 g / 21.124 g), the unbounded job 10.692491 g each, peaks 8e-11
@@ -64,6 +75,7 @@ use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 
 use super::{program, Limits};
+use crate::balancing::model::Objective;
 
 /// Scaled condition number at and above which min-max looks for the
 /// least-mass optimum, and the inverse of the relative singular value at
@@ -84,6 +96,7 @@ type Solved = (Vec<Complex64>, u32, String);
 /// under `bounds`; `d[k]` is column `k`'s scale (`x_k = β d_k y_k`), so the
 /// mass in grams² is `β² Σ_k d_k² |y_k|²`.
 pub(super) fn refine(
+    objective: Objective,
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
     bounds: &[(usize, f64)],
@@ -98,7 +111,11 @@ pub(super) fn refine(
     }
     let y1 = DVector::from_column_slice(&first.0);
     let r1 = b + a * &y1;
-    let peak = |r: &DVector<Complex64>| r.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    // The objective: the peak (min-max) or the 2-norm (least squares).
+    let peak = |r: &DVector<Complex64>| match objective {
+        Objective::MinMax => r.iter().map(|z| z.norm()).fold(0.0, f64::max),
+        Objective::LeastSquares => r.norm(),
+    };
     let b_max = peak(b);
     let t1 = peak(&r1);
     let room = SLACK * (t1 + b_max);
@@ -118,9 +135,16 @@ pub(super) fn refine(
     let reach = 2.0 * (mass1 / w.iter().copied().fold(f64::INFINITY, f64::min)).sqrt();
     let cap = t1 + room;
     let av = a * &lost;
-    let moving: Vec<usize> = (0..rows)
-        .filter(|&i| r1[i].norm() + av.row(i).norm() * reach > cap)
-        .collect();
+    // Min-max caps every row it can move; least squares caps the residual's
+    // norm, one cone over all rows, when the move can reach it.
+    let moving: Vec<usize> = match objective {
+        Objective::MinMax => (0..rows)
+            .filter(|&i| r1[i].norm() + av.row(i).norm() * reach > cap)
+            .collect(),
+        Objective::LeastSquares => Vec::new(),
+    };
+    let whole = (objective == Objective::LeastSquares && t1 + av.norm() * reach > cap)
+        .then_some((&av, &r1, cap));
     let binding: Vec<(usize, f64)> = bounds
         .iter()
         .copied()
@@ -143,7 +167,8 @@ pub(super) fn refine(
                 .map_or_else(|| binding[i - moving.len()].1, |_| cap)
         })
         .collect();
-    let Ok((z, iterations, status)) = program::least_norm_capped(&m, &c, &ac, &bc, &caps, limits)
+    let Ok((z, iterations, status)) =
+        program::least_norm_capped(&m, &c, &ac, &bc, &caps, whole, limits)
     else {
         return first;
     };

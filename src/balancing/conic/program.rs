@@ -34,19 +34,24 @@ pub(super) fn solve_on(
 }
 
 /// The scaled least-mass program of `least_mass`: `min ½‖c + M z‖²` subject
-/// to `|b_a + (A z)_a| ≤ caps[a]` on every row of `a`, `b`.
+/// to `|b_a + (A z)_a| ≤ caps[a]` on every row of `a`, `b`, and, when
+/// `whole` is `(A₂, b₂, cap)`, to `‖b₂ + A₂ z‖₂ ≤ cap` (least squares).
 pub(super) fn least_norm_capped(
     m: &DMatrix<Complex64>,
     c: &DVector<Complex64>,
     a: &DMatrix<Complex64>,
     b: &DVector<Complex64>,
     caps: &[f64],
+    whole: Option<(&DMatrix<Complex64>, &DVector<Complex64>, f64)>,
     limits: Limits,
 ) -> Result<(Vec<Complex64>, u32, String), InputError> {
     let mut problem = Problem::new(m.ncols());
     problem.least_squares(m.nrows(), |i, k| m[(i, k)], |i| c[i]);
     for (row, &cap) in caps.iter().enumerate() {
         problem.capped(&|k| a[(row, k)], b[row], cap);
+    }
+    if let Some((a2, b2, cap)) = whole {
+        problem.norm_capped(a2, b2, cap);
     }
     problem.solve(limits)
 }
@@ -162,6 +167,17 @@ impl Problem {
         // No variable beside y: zero coefficients are left out.
         self.push_residual(coef, c, [(0, 0.0), (0, 0.0)]);
         self.cones.push(SupportedConeT::SecondOrderConeT(3));
+    }
+
+    /// `‖c + A y‖₂ ≤ cap` over all rows of `a`, `c` as one cone
+    /// `(cap, Re r₁, Im r₁, …)` of dimension `1 + 2 rows`.
+    fn norm_capped(&mut self, a: &DMatrix<Complex64>, c: &DVector<Complex64>, cap: f64) {
+        self.push([], cap);
+        for row in 0..a.nrows() {
+            self.push_residual(&|k| a[(row, k)], c[row], [(0, 0.0), (0, 0.0)]);
+        }
+        self.cones
+            .push(SupportedConeT::SecondOrderConeT(1 + 2 * a.nrows()));
     }
 
     /// Run Clarabel; the complex solution y, iterations and status, or a 422.

@@ -115,3 +115,63 @@ fn min_max_on_exactly_dependent_planes_splits_the_mass_least_norm_under_a_kept_b
         );
     }
 }
+
+fn angle(s: &Solution, plane: &str) -> f64 {
+    s.corrections
+        .iter()
+        .find(|c| c.plane == plane)
+        .unwrap()
+        .angle_deg
+}
+
+/// Angles `a`, `b` in degrees the same to `tol` degrees, across 0/360.
+fn same_angle(a: f64, b: f64, tol: f64) -> bool {
+    let d = (a - b).rem_euclid(360.0);
+    d.min(360.0 - d) <= tol
+}
+
+#[test]
+fn least_squares_on_exactly_dependent_planes_splits_least_norm_under_a_binding_bound() {
+    // Session 20: with a bound below half the sum on one of two identical
+    // planes, the cone program's least-squares answer was any split of the
+    // sum that kept the bound, an accident of the interior point's path.
+    // The least-mass split (the pseudo-inverse's, as without a bound) puts
+    // the bounded plane at its bound, in the sum's direction, and the rest
+    // on the other plane; the residual is the unbounded one.
+    let (session, options) = dependent_pump();
+    let free = solve(&session, &options);
+    let total = mass(&free, "inboard") + mass(&free, "outboard");
+    let direction = angle(&free, "inboard");
+    assert!(same_angle(direction, angle(&free, "outboard"), 1e-9));
+    let quarter = total / 4.0;
+    for (bounded, other, limits) in [
+        ("inboard", "outboard", json!({"inboard": quarter})),
+        ("outboard", "inboard", json!({"outboard": quarter})),
+        (
+            "inboard",
+            "outboard",
+            json!({"inboard": quarter, "outboard": total}),
+        ),
+    ] {
+        let got = solve(&session, &with(&options, json!({"max_mass_g": limits})));
+        let (held, rest) = (mass(&got, bounded), mass(&got, other));
+        assert!(held <= quarter, "{limits}: {held} g above {quarter} g");
+        assert!(
+            (held - quarter).abs() <= 1e-7 * total && (rest - 3.0 * quarter).abs() <= 1e-7 * total,
+            "{limits}: {bounded} {held} g, {other} {rest} g, want {quarter} g and {} g",
+            3.0 * quarter
+        );
+        for plane in [bounded, other] {
+            assert!(
+                same_angle(angle(&got, plane), direction, 1e-6),
+                "{limits}: {plane} at {}° vs {direction}°",
+                angle(&got, plane)
+            );
+        }
+        let (rms, want) = (got.summary.rms_after, free.summary.rms_after);
+        assert!(
+            (rms - want).abs() <= 1e-9 * got.summary.rms_before,
+            "{limits}: rms {rms} vs {want}"
+        );
+    }
+}

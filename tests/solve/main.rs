@@ -8,6 +8,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod across_options;
 mod examples;
 mod invalid_sessions;
 mod parse_equivalence;

@@ -2,8 +2,8 @@
 //! (method §4.1), solved exactly by Clarabel; min-max working sets of many
 //! rows (`active_set`) by a small dense primal-dual method (`primal_dual`), checked
 //! against Clarabel's full program (tests/solve/minmax/equivalence.rs), with
-//! Clarabel again wherever that method's arithmetic fails; a min-max answer
-//! is then polished to rounding on its active set (`polish`). Where planes
+//! Clarabel again wherever that method's arithmetic fails; the answer is
+//! then polished to rounding on its active set (`polish`). Where planes
 //! are undetermined or nearly so, both objectives pick the least-mass
 //! optimum among the equally good ones (`least_mass`).
 //!
@@ -186,13 +186,16 @@ pub fn solve_cone_with(
         }
     };
     let mut solved = loose::solve(&a_s, &b_s, &bounds, program)?;
-    if objective == Objective::MinMax {
-        // The interior point fixes the peak to its gap but the correction
-        // only to about the gap's square root: Newton on the active set,
-        // taken with a certificate of optimality (`polish`).
-        if let Some(y) = polish::polish(&a_s, &b_s, &bounds, &solved.0) {
-            solved.0 = y;
-        }
+    // The interior point fixes the objective to its gap but the correction
+    // only to about the gap's square root (min-max) or the gap over the
+    // curvature (least squares): Newton on the active set, taken with a
+    // certificate of optimality (`polish`).
+    let polished = match objective {
+        Objective::MinMax => polish::polish(&a_s, &b_s, &bounds, &solved.0),
+        Objective::LeastSquares => polish::polish_least_squares(&a_s, &b_s, &bounds, &solved.0),
+    };
+    if let Some(y) = polished {
+        solved.0 = y;
     }
     if least_mass {
         solved = least_mass::refine(objective, &a_s, &b_s, &bounds, &d, solved, limits);

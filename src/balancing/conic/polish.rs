@@ -129,6 +129,96 @@ pub(super) fn polish(
     None
 }
 
+/// The Newton step `J Δ = −F`: columns of `J` at unit norm, LU for speed,
+/// SVD (least squares) where a degenerate active set leaves `J` singular.
+fn newton_step(mut j: DMatrix<f64>, f: &DVector<f64>) -> Option<Vec<f64>> {
+    let scale: Vec<f64> = j
+        .column_iter()
+        .map(|c| {
+            let v = c.norm();
+            if v > 0.0 {
+                1.0 / v
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    for (c, &sc) in scale.iter().enumerate() {
+        j.column_mut(c).scale_mut(sc);
+    }
+    let rhs = -f;
+    let step = match j.clone().lu().solve(&rhs) {
+        Some(st) if st.iter().all(|v| v.is_finite()) => st,
+        _ => j.svd(true, true).solve(&rhs, 1e-14).ok()?,
+    };
+    let step: Vec<f64> = step.iter().zip(&scale).map(|(v, s)| v * s).collect();
+    step.iter().all(|v| v.is_finite()).then_some(step)
+}
+
+/// Least squares under mass bounds, `min ‖b + A y‖₂` subject to
+/// `|y_k| ≤ m_k`, to rounding near the interior point's `y0` (module docs):
+/// Newton on the KKT system of the bounds guessed binding, in augmented
+/// form (`r = b + A y` an unknown beside `y`, so `AᴴA` is never formed),
+///
+/// `r − P x = r₀`, `Pᵀ r + Σ ν_k E_k x = 0`, `|y_k|² = m_k²`,
+///
+/// taken only with every `ν_k ≥ 0`, every bound kept and `‖r‖₂` no higher
+/// than the interior point's.
+pub(super) fn polish_least_squares(
+    a: &DMatrix<Complex64>,
+    b: &DVector<Complex64>,
+    bounds: &[(usize, f64)],
+    y0: &[Complex64],
+) -> Option<Vec<Complex64>> {
+    let n = a.ncols();
+    let prog = Real::new(a, b);
+    let x0: Vec<f64> = (0..2 * n)
+        .map(|i| if i < n { y0[i].re } else { y0[i - n].im })
+        .collect();
+    let norm = |x: &[f64]| prog.residuals(x).iter().map(|v| v * v).sum::<f64>().sqrt();
+    let t0 = norm(&x0);
+    if !t0.is_finite() {
+        return None;
+    }
+    let mut kset: Vec<usize> = (0..bounds.len())
+        .filter(|&c| {
+            let (k, m) = bounds[c];
+            x0[k].hypot(x0[n + k]) >= m * (1.0 - ACTIVE)
+        })
+        .collect();
+    for _ in 0..ROUNDS {
+        let (x, nu) = prog.newton_least_squares(&x0, bounds, &kset)?;
+        let scale_nu = nu.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
+        if let Some((i, _)) = nu
+            .iter()
+            .enumerate()
+            .filter(|p| *p.1 < -1e-9 * scale_nu)
+            .min_by(|p, q| p.1.total_cmp(q.1))
+        {
+            kset.remove(i);
+            continue;
+        }
+        let broken = (0..bounds.len())
+            .filter(|c| !kset.contains(c))
+            .map(|c| (c, x[bounds[c].0].hypot(x[n + bounds[c].0]) / bounds[c].1))
+            .filter(|&(_, ratio)| ratio > 1.0 + ROUND)
+            .max_by(|p, q| p.1.total_cmp(&q.1));
+        if let Some((c, _)) = broken {
+            kset.push(c);
+            continue;
+        }
+        let within = bounds
+            .iter()
+            .all(|&(k, m)| x[k].hypot(x[n + k]) <= m * (1.0 + ROUND));
+        let t = norm(&x);
+        if !within || !(t <= t0 * (1.0 + ROUND) + 1e-300) {
+            return None;
+        }
+        return Some((0..n).map(|k| Complex64::new(x[k], x[n + k])).collect());
+    }
+    None
+}
+
 fn peak(r: &[f64]) -> f64 {
     r.iter().copied().fold(0.0, f64::max)
 }
@@ -206,6 +296,105 @@ impl Real {
         (0..2 * self.n)
             .map(|j| self.p[i][j] * r[0] + self.q[i][j] * r[1])
             .collect()
+    }
+
+    /// Newton on the augmented KKT system of least squares under the
+    /// bounds `kset` (indices into `bounds`) from `x0`: unknowns `r` (2 per
+    /// row), `x`, `ν`; the converged `(x, ν)`, or `None`.
+    fn newton_least_squares(
+        &self,
+        x0: &[f64],
+        bounds: &[(usize, f64)],
+        kset: &[usize],
+    ) -> Option<(Vec<f64>, Vec<f64>)> {
+        let (n, n2, m2) = (self.n, 2 * self.n, 2 * self.m);
+        let nk = kset.len();
+        let dim = m2 + n2 + nk;
+        let mut x = x0.to_vec();
+        let mut r: Vec<f64> = (0..self.m).flat_map(|i| self.residual(i, &x)).collect();
+        // Multipliers fitted to x0 (SVD least squares): Pᵀ r + Σ ν E x = 0.
+        let pr: Vec<f64> = (0..n2)
+            .map(|j| {
+                (0..self.m)
+                    .map(|i| self.p[i][j] * r[2 * i] + self.q[i][j] * r[2 * i + 1])
+                    .sum()
+            })
+            .collect();
+        let fit = DMatrix::from_fn(n2, nk, |row, c| {
+            let k = bounds[kset[c]].0;
+            if row == k || row == n + k {
+                x[row]
+            } else {
+                0.0
+            }
+        });
+        let mut nu: Vec<f64> = if nk == 0 {
+            Vec::new()
+        } else {
+            let rhs = -DVector::from_vec(pr);
+            fit.svd(true, true)
+                .solve(&rhs, 1e-14)
+                .ok()?
+                .iter()
+                .copied()
+                .collect()
+        };
+        let mut last = f64::INFINITY;
+        for _ in 0..NEWTON {
+            let mut f = DVector::zeros(dim);
+            let mut j = DMatrix::zeros(dim, dim);
+            // r − P x − r₀ = 0.
+            for i in 0..self.m {
+                let (ri, xi) = (2 * i, m2);
+                let fit = self.residual(i, &x);
+                f[ri] = r[ri] - fit[0];
+                f[ri + 1] = r[ri + 1] - fit[1];
+                j[(ri, ri)] = 1.0;
+                j[(ri + 1, ri + 1)] = 1.0;
+                for c in 0..n2 {
+                    j[(ri, xi + c)] = -self.p[i][c];
+                    j[(ri + 1, xi + c)] = -self.q[i][c];
+                    // Pᵀ r: row m2 + c.
+                    j[(m2 + c, ri)] = self.p[i][c];
+                    j[(m2 + c, ri + 1)] = self.q[i][c];
+                    f[m2 + c] += self.p[i][c] * r[ri] + self.q[i][c] * r[ri + 1];
+                }
+            }
+            for (c, &kc) in kset.iter().enumerate() {
+                let (k, mk) = bounds[kc];
+                let col = m2 + n2 + c;
+                for v in [k, n + k] {
+                    f[m2 + v] += nu[c] * x[v];
+                    j[(m2 + v, m2 + v)] += nu[c];
+                    j[(m2 + v, col)] = x[v];
+                    j[(col, m2 + v)] = 2.0 * x[v];
+                }
+                f[col] = x[k] * x[k] + x[n + k] * x[n + k] - mk * mk;
+            }
+            let step = newton_step(j, &f)?;
+            for (v, d) in r.iter_mut().zip(&step[..m2]) {
+                *v += d;
+            }
+            for (v, d) in x.iter_mut().zip(&step[m2..m2 + n2]) {
+                *v += d;
+            }
+            for (v, d) in nu.iter_mut().zip(&step[m2 + n2..]) {
+                *v += d;
+            }
+            let rn = r.iter().map(|v| v * v).sum::<f64>().sqrt();
+            let xn = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+            let mn = bounds.iter().map(|b| b.1 * b.1).fold(0.0, f64::max);
+            let stat = f.rows(m2, n2).amax();
+            let settled = f.rows(0, m2).amax() <= 1e-13 * (1.0 + rn + xn)
+                && stat <= 1e-11 * (rn + 1e-300) + 1e-14
+                && (nk == 0 || f.rows(m2 + n2, nk).amax() <= 1e-11 * mn + 1e-300);
+            let size = step[m2..m2 + n2].iter().map(|v| v * v).sum::<f64>().sqrt();
+            if settled && (size <= 1e-14 * (1.0 + xn) || size >= last) {
+                return Some((x, nu));
+            }
+            last = size;
+        }
+        None
     }
 
     /// Newton on the KKT system of the active rows `aset` and bounds `kset`
@@ -288,32 +477,7 @@ impl Real {
                 j[(n + k, n + k)] += nu[c];
                 f[col] = x[k] * x[k] + x[n + k] * x[n + k] - m * m;
             }
-            // Columns at unit norm, then the SVD's least-squares step.
-            let scale: Vec<f64> = j
-                .column_iter()
-                .map(|c| {
-                    let v = c.norm();
-                    if v > 0.0 {
-                        1.0 / v
-                    } else {
-                        1.0
-                    }
-                })
-                .collect();
-            for (c, &sc) in scale.iter().enumerate() {
-                j.column_mut(c).scale_mut(sc);
-            }
-            // LU for speed; SVD (least squares) where a degenerate active
-            // set leaves J singular.
-            let rhs = -&f;
-            let step = match j.clone().lu().solve(&rhs) {
-                Some(st) if st.iter().all(|v| v.is_finite()) => st,
-                _ => j.svd(true, true).solve(&rhs, 1e-14).ok()?,
-            };
-            let step: Vec<f64> = step.iter().zip(&scale).map(|(v, s)| v * s).collect();
-            if step.iter().any(|v| !v.is_finite()) {
-                return None;
-            }
+            let step = newton_step(j, &f)?;
             for (xi, d) in x.iter_mut().zip(&step[..n2]) {
                 *xi += d;
             }

@@ -154,3 +154,36 @@ fn min_max_optima_built_from_their_optimality_conditions_come_back_to_1e_9() {
     }
     println!("worst relative error {worst:.2e}");
 }
+
+#[test]
+fn bounded_least_squares_on_one_plane_is_the_radial_projection_to_1e_9() {
+    // With one plane, ‖b + a x‖² = ‖a‖² |x − x_ls|² + const: the bounded
+    // optimum is x_ls pulled back radially onto the bound.
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+    let mut rng = StdRng::seed_from_u64(4);
+    let mut worst: f64 = 0.0;
+    for rows in [1, 2, 5, 40] {
+        let mut polar =
+            |s: f64| Complex64::from_polar(s * rng.gen_range(0.3..1.0), rng.gen_range(0.0..6.283));
+        let a = DMatrix::from_fn(rows, 1, |_, _| polar(1.5));
+        let b = DVector::from_fn(rows, |_, _| polar(80.0));
+        let x_ls = -(a.adjoint() * &b)[0] / a.norm_squared();
+        for share in [0.9, 0.5, 1e-3] {
+            let m = share * x_ls.norm();
+            let want = x_ls * share;
+            for objective in [Objective::LeastSquares] {
+                let got =
+                    fieldbal::balancing::conic::solve_cone(&a, &b, objective, &[Some(m)]).unwrap();
+                let err = (got.x[0] - want).norm() / want.norm();
+                worst = worst.max(err);
+                assert!(
+                    err <= 1e-9,
+                    "{rows} rows, share {share}: {} vs {want}, {err:.2e}",
+                    got.x[0]
+                );
+                assert!(got.bound_active[0]);
+            }
+        }
+    }
+    println!("worst relative error {worst:.2e}");
+}

@@ -32,7 +32,7 @@
 //!
 //! Near a zero peak (exact data, as many planes as needed) the squared
 //! constraints lose their curvature; there the least-squares correction
-//! (QR) is tried instead, taken when its peak is no higher.
+//! (QR) is tried first, taken when its peak is no higher.
 
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
@@ -70,7 +70,9 @@ pub(super) fn polish(
         return None;
     }
     if t0 <= NEAR_ZERO {
-        return least_squares(a, b, bounds, t0);
+        if let Some(y) = least_squares(a, b, bounds, t0) {
+            return Some(y);
+        }
     }
     // The first guess: the rows nearest the peak, at most 2n + 1 constraints
     // with the bounds (a non-degenerate optimum has no more).

@@ -131,6 +131,26 @@ pub(super) fn polish(
     None
 }
 
+/// The least-squares solution of `m z = rhs` (more rows than columns): by
+/// QR, or by SVD where `R` is singular or nearly so (the multipliers' first
+/// guess).
+fn least_squares_fit(m: DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+    if m.nrows() >= m.ncols() {
+        let qr = m.clone().qr();
+        let r = qr.r();
+        let diag = r.diagonal().map(f64::abs);
+        // A pivot at rounding level of the largest: rank-deficient, SVD.
+        if diag.min() > 1e-12 * diag.max() {
+            if let Some(z) = r.solve_upper_triangular(&qr.q().tr_mul(rhs)) {
+                if z.iter().all(|v| v.is_finite()) {
+                    return Some(z);
+                }
+            }
+        }
+    }
+    m.svd(true, true).solve(rhs, 1e-14).ok()
+}
+
 /// The Newton step `J Δ = −F`: columns of `J` at unit norm, LU for speed,
 /// SVD (least squares) where a degenerate active set leaves `J` singular.
 fn newton_step(mut j: DMatrix<f64>, f: &DVector<f64>) -> Option<Vec<f64>> {
@@ -213,7 +233,8 @@ pub(super) fn polish_least_squares(
             .iter()
             .all(|&(k, m)| x[k].hypot(x[n + k]) <= m * (1.0 + ROUND));
         let t = norm(&x);
-        if !within || !(t <= t0 * (1.0 + ROUND) + 1e-300) {
+        // (A NaN norm fails `t.is_finite()`.)
+        if !within || !t.is_finite() || t > t0 * (1.0 + ROUND) + 1e-300 {
             return None;
         }
         return Some((0..n).map(|k| Complex64::new(x[k], x[n + k])).collect());
@@ -250,17 +271,17 @@ struct Real {
     n: usize,
     m: usize,
     r0: Vec<[f64; 2]>,
-    p: Vec<Vec<f64>>,
-    q: Vec<Vec<f64>>,
+    /// Rows' coefficients, `2n` per row, one buffer each (one allocation).
+    p: Vec<f64>,
+    q: Vec<f64>,
 }
 
 impl Real {
     fn new(a: &DMatrix<Complex64>, b: &DVector<Complex64>) -> Real {
         let (m, n) = a.shape();
-        let mut p = Vec::with_capacity(m);
-        let mut q = Vec::with_capacity(m);
+        let (mut p, mut q) = (vec![0.0; 2 * n * m], vec![0.0; 2 * n * m]);
         for i in 0..m {
-            let (mut pi, mut qi) = (vec![0.0; 2 * n], vec![0.0; 2 * n]);
+            let (pi, qi) = (&mut p[2 * n * i..], &mut q[2 * n * i..]);
             for k in 0..n {
                 let c = a[(i, k)];
                 pi[k] = c.re;
@@ -268,18 +289,26 @@ impl Real {
                 qi[k] = c.im;
                 qi[n + k] = c.re;
             }
-            p.push(pi);
-            q.push(qi);
         }
         let r0 = b.iter().map(|z| [z.re, z.im]).collect();
         Real { n, m, r0, p, q }
     }
 
+    /// Row `i`'s real-part coefficients (2n).
+    fn p(&self, i: usize) -> &[f64] {
+        &self.p[2 * self.n * i..2 * self.n * (i + 1)]
+    }
+
+    /// Row `i`'s imaginary-part coefficients (2n).
+    fn q(&self, i: usize) -> &[f64] {
+        &self.q[2 * self.n * i..2 * self.n * (i + 1)]
+    }
+
     fn residual(&self, i: usize, x: &[f64]) -> [f64; 2] {
         let dot = |v: &[f64]| v.iter().zip(x).map(|(a, b)| a * b).sum::<f64>();
         [
-            self.r0[i][0] + dot(&self.p[i]),
-            self.r0[i][1] + dot(&self.q[i]),
+            self.r0[i][0] + dot(self.p(i)),
+            self.r0[i][1] + dot(self.q(i)),
         ]
     }
 
@@ -296,7 +325,7 @@ impl Real {
     fn gradient(&self, i: usize, x: &[f64]) -> Vec<f64> {
         let r = self.residual(i, x);
         (0..2 * self.n)
-            .map(|j| self.p[i][j] * r[0] + self.q[i][j] * r[1])
+            .map(|j| self.p(i)[j] * r[0] + self.q(i)[j] * r[1])
             .collect()
     }
 
@@ -318,7 +347,7 @@ impl Real {
         let pr: Vec<f64> = (0..n2)
             .map(|j| {
                 (0..self.m)
-                    .map(|i| self.p[i][j] * r[2 * i] + self.q[i][j] * r[2 * i + 1])
+                    .map(|i| self.p(i)[j] * r[2 * i] + self.q(i)[j] * r[2 * i + 1])
                     .sum()
             })
             .collect();
@@ -334,12 +363,7 @@ impl Real {
             Vec::new()
         } else {
             let rhs = -DVector::from_vec(pr);
-            fit.svd(true, true)
-                .solve(&rhs, 1e-14)
-                .ok()?
-                .iter()
-                .copied()
-                .collect()
+            least_squares_fit(fit, &rhs)?.iter().copied().collect()
         };
         let mut last = f64::INFINITY;
         for _ in 0..NEWTON {
@@ -354,12 +378,12 @@ impl Real {
                 j[(ri, ri)] = 1.0;
                 j[(ri + 1, ri + 1)] = 1.0;
                 for c in 0..n2 {
-                    j[(ri, xi + c)] = -self.p[i][c];
-                    j[(ri + 1, xi + c)] = -self.q[i][c];
+                    j[(ri, xi + c)] = -self.p(i)[c];
+                    j[(ri + 1, xi + c)] = -self.q(i)[c];
                     // Pᵀ r: row m2 + c.
-                    j[(m2 + c, ri)] = self.p[i][c];
-                    j[(m2 + c, ri + 1)] = self.q[i][c];
-                    f[m2 + c] += self.p[i][c] * r[ri] + self.q[i][c] * r[ri + 1];
+                    j[(m2 + c, ri)] = self.p(i)[c];
+                    j[(m2 + c, ri + 1)] = self.q(i)[c];
+                    f[m2 + c] += self.p(i)[c] * r[ri] + self.q(i)[c] * r[ri + 1];
                 }
             }
             for (c, &kc) in kset.iter().enumerate() {
@@ -439,7 +463,7 @@ impl Real {
         });
         let mut rhs = DVector::zeros(n2 + 1);
         rhs[n2] = 1.0;
-        let lam = fit.svd(true, true).solve(&rhs, 1e-14).ok()?;
+        let lam = least_squares_fit(fit, &rhs)?;
         let mut mu: Vec<f64> = lam.iter().take(na).copied().collect();
         let mut nu: Vec<f64> = lam.iter().skip(na).copied().collect();
         let mut last = f64::INFINITY;
@@ -459,7 +483,7 @@ impl Real {
                 for r in 0..n2 {
                     for col in 0..n2 {
                         j[(r, col)] +=
-                            mu[c] * (self.p[i][r] * self.p[i][col] + self.q[i][r] * self.q[i][col]);
+                            mu[c] * (self.p(i)[r] * self.p(i)[col] + self.q(i)[r] * self.q(i)[col]);
                     }
                 }
                 f[n2 + 1 + c] = r2(&x, i) - s;

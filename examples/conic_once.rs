@@ -1,7 +1,7 @@
 //! One solve of a `benches/conic.rs` job, for instruction counts that do not
 //! depend on the machine's load: `valgrind --tool=callgrind
 //! target/release/examples/conic_once min_max 1000` (jobs: `min_max`,
-//! `bounded_min_max`, `session`; rows 11 or 1000). The jobs are the bench's own
+//! `bounded_min_max`, `bounded_least_squares`, `session`; rows 11 or 1000). The jobs are the bench's own
 //! (`benches/support/conic_jobs.rs`), and the time limit is raised so that
 //! valgrind's slowness cannot end a solve.
 
@@ -35,6 +35,11 @@ fn main() {
             let s = solve_cone_within(&a, &b, Objective::MinMax, &bounds, limits).unwrap();
             println!("{} iterations, max |r| = {:.15e}", s.iterations, s.value);
         }
+        "bounded_least_squares" => {
+            let bounds = binding_bounds(&a, &b);
+            let s = solve_cone_within(&a, &b, Objective::LeastSquares, &bounds, limits).unwrap();
+            println!("{} iterations, ‖r‖ = {:.15e}", s.iterations, s.value);
+        }
         "session" => {
             let s = session(&a, &b);
             let options = SolveOptions {
@@ -44,6 +49,8 @@ fn main() {
             let solution = balancing::solve(&s, &options).unwrap();
             println!("{} warnings", solution.warnings.len());
         }
-        other => panic!("unknown job {other}: min_max, bounded_min_max or session"),
+        other => panic!(
+            "unknown job {other}: min_max, bounded_min_max, bounded_least_squares or session"
+        ),
     }
 }

@@ -12,8 +12,7 @@ use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
-#[path = "../common/generated.rs"]
-mod generated;
+use super::properties::generated;
 
 /// A rotor in the internal frame: `w` rows × planes, the as-found vibration
 /// `y0`, one trial per plane, `sensors` sensors per speed (rows are
@@ -286,7 +285,9 @@ fn sensor_selection_row_weights_and_excluded_planes_match_an_independent_weighte
     let rotor = Rotor::random(5, 3, 2, 3, 8.0);
     let conv = Conventions::ALL[1];
     let s = rotor.session(conv, 1.0, 1.0);
-    let cases: Vec<(serde_json::Value, Vec<(usize, f64)>, Vec<usize>)> = vec![
+    // (options, used rows with their weights, planes solved for)
+    type Case = (serde_json::Value, Vec<(usize, f64)>, Vec<usize>);
+    let cases: Vec<Case> = vec![
         (
             serde_json::json!({}),
             (0..6).map(|a| (a, 1.0)).collect(),

@@ -11,7 +11,7 @@ use proptest::prelude::*;
 use proptest::test_runner::FileFailurePersistence;
 
 #[path = "../common/generated.rs"]
-mod generated;
+pub(crate) mod generated;
 
 /// A random rotor in the internal frame: influence matrix, as-found unbalance
 /// (the correction is its negative), trial weights, and row layout.

@@ -69,23 +69,24 @@ fn one_plane_two_sensors_gives_the_equalising_correction_to_1e_9() {
 /// is bounded at `|x*_0|`), multipliers `|v_a| > 0`; the other rows well
 /// below the peak. Convex, so these conditions make `x*` optimal; unique,
 /// as the active rows have full column rank.
-fn built(
-    seed: u64,
-    n: usize,
-    rows: usize,
-    bounded: bool,
-    t: f64,
-) -> (
+/// A built job: `A`, `b`, the optimum `x*`, its peak `t`, the bounds.
+type Built = (
     DMatrix<Complex64>,
     DVector<Complex64>,
     DVector<Complex64>,
     f64,
     Vec<Option<f64>>,
-) {
+);
+
+fn built(seed: u64, n: usize, rows: usize, bounded: bool, t: f64) -> Built {
     use rand::{rngs::StdRng, Rng, SeedableRng};
     let mut rng = StdRng::seed_from_u64(seed);
-    let mut polar =
-        |s: f64| Complex64::from_polar(s * rng.gen_range(0.3..1.0), rng.gen_range(0.0..6.283));
+    let mut polar = |s: f64| {
+        Complex64::from_polar(
+            s * rng.gen_range(0.3..1.0),
+            rng.gen_range(0.0..std::f64::consts::TAU),
+        )
+    };
     let a = DMatrix::from_fn(rows, n, |_, _| polar(1.5));
     let x = DVector::from_fn(n, |_, _| polar(40.0));
     let p = n + 1;
@@ -163,26 +164,29 @@ fn bounded_least_squares_on_one_plane_is_the_radial_projection_to_1e_9() {
     let mut rng = StdRng::seed_from_u64(4);
     let mut worst: f64 = 0.0;
     for rows in [1, 2, 5, 40] {
-        let mut polar =
-            |s: f64| Complex64::from_polar(s * rng.gen_range(0.3..1.0), rng.gen_range(0.0..6.283));
+        let mut polar = |s: f64| {
+            Complex64::from_polar(
+                s * rng.gen_range(0.3..1.0),
+                rng.gen_range(0.0..std::f64::consts::TAU),
+            )
+        };
         let a = DMatrix::from_fn(rows, 1, |_, _| polar(1.5));
         let b = DVector::from_fn(rows, |_, _| polar(80.0));
         let x_ls = -(a.adjoint() * &b)[0] / a.norm_squared();
         for share in [0.9, 0.5, 1e-3] {
             let m = share * x_ls.norm();
             let want = x_ls * share;
-            for objective in [Objective::LeastSquares] {
-                let got =
-                    fieldbal::balancing::conic::solve_cone(&a, &b, objective, &[Some(m)]).unwrap();
-                let err = (got.x[0] - want).norm() / want.norm();
-                worst = worst.max(err);
-                assert!(
-                    err <= 1e-9,
-                    "{rows} rows, share {share}: {} vs {want}, {err:.2e}",
-                    got.x[0]
-                );
-                assert!(got.bound_active[0]);
-            }
+            let objective = Objective::LeastSquares;
+            let got =
+                fieldbal::balancing::conic::solve_cone(&a, &b, objective, &[Some(m)]).unwrap();
+            let err = (got.x[0] - want).norm() / want.norm();
+            worst = worst.max(err);
+            assert!(
+                err <= 1e-9,
+                "{rows} rows, share {share}: {} vs {want}, {err:.2e}",
+                got.x[0]
+            );
+            assert!(got.bound_active[0]);
         }
     }
     println!("worst relative error {worst:.2e}");

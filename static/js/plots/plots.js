@@ -40,39 +40,55 @@ function bounded(x, bound, digits) {
   return fmt(x, digits);
 }
 
-const dampingUnresolved = (r) => r.damping_ratio_bound === "upper" || r.amplification_factor_bound === "lower";
+/**
+ * The identify answer's warnings that concern one result: the service names
+ * the plane (`plane`) and starts its message with "sensor 'S', plane 'P':".
+ */
+const aboutRow = (w, r) => w.plane === r.plane && String(w.message || "").startsWith(`sensor '${r.sensor}', plane '${r.plane}'`);
 
-/** Identification of the rotor from the coefficients over the speeds (3 or more). */
+/** A warning of the identify answer, in the service's words. */
+const identWarning = (w, tag) => h(tag, { class: `ident-warning ${w.code === "damping_unresolved" ? "damping-unresolved" : ""}`, dataset: { code: w.code, plane: w.plane || "" } },
+  tag === "tr" ? h("td", { colspan: 6 }, `⚠ ${w.message}`) : `⚠ ${w.message}`);
+
+/**
+ * Identification of the rotor from the coefficients over the speeds (3 or
+ * more): every critical speed the service finds, one outside the speeds
+ * measured marked as extrapolated, and every warning the answer carries in
+ * the service's words, under the result it concerns. Criticals outside the
+ * range were left out unsaid, and the warnings (a damping the readings cannot
+ * resolve, a poor fit, no mode) were dropped or said in the form's words.
+ */
 function identification(sol) {
   const box = h("div", { class: "identification" }, h("p", { class: "hint" }, "Looking for a critical speed in the range…"));
   const key = JSON.stringify([state.id, state.runs.length]);
   const draw = (res) => {
     const lo = Math.min(...state.setup.speeds);
     const hi = Math.max(...state.setup.speeds);
-    const inside = (res.results || []).filter((r) => r.critical_speed_rpm >= lo && r.critical_speed_rpm <= hi);
-    if (!inside.length) return replace(box, h("p", { class: "hint" }, "No critical speed found inside the speeds measured."));
-    const unresolved = inside.filter(dampingUnresolved);
-    replace(box, h("h4", {}, "Critical speed inside the measured range"),
-      h("table", { class: "ident-table" },
+    const results = res.results || [];
+    const warnings = res.warnings || [];
+    const outside = (r) => r.critical_speed_rpm < lo || r.critical_speed_rpm > hi || warnings.some((w) => w.code === "critical_outside_range" && aboutRow(w, r));
+    const loose = warnings.filter((w) => !results.some((r) => aboutRow(w, r)));
+    const range = `${fmt(lo, 0)}–${fmt(hi, 0)} rpm`;
+    replace(box,
+      h("h4", {}, `Critical speeds from the readings at ${range}`),
+      results.length ? h("table", { class: "ident-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Critical speed, rpm"), h("th", {}, "Damping ratio"), h("th", {}, "Amplification"), h("th", {}, "Margin to service speed"))),
-        h("tbody", {}, inside.map((r) => h("tr", {},
-          h("td", {}, r.sensor), h("td", {}, r.plane), h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0)),
+        h("tbody", {}, results.map((r) => [h("tr", { class: outside(r) ? "ident-result outside" : "ident-result", dataset: { sensor: r.sensor, plane: r.plane } },
+          h("td", {}, r.sensor), h("td", {}, r.plane),
+          h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0), outside(r) ? h("span", { class: "outside-note" }, ` outside the ${range} measured: extrapolated`) : ""),
           h("td", { class: r.damping_ratio_bound ? "damping bound" : "damping" }, bounded(r.damping_ratio, r.damping_ratio_bound, 3)),
           h("td", { class: r.amplification_factor_bound ? "amplification bound" : "amplification" }, bounded(r.amplification_factor, r.amplification_factor_bound, 1)),
           h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "no service speed in this job's rotor data"
-            : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`))))),
-      unresolved.map((r) => h("p", { class: "hint damping-unresolved", dataset: { sensor: r.sensor, plane: r.plane } },
-        `Damping not resolved (${r.sensor}, plane ${r.plane}, ${fmt(r.critical_speed_rpm, 0)} rpm): the readings cannot tell its damping ratio from zero`
-        + `${Number.isFinite(r.damping_ratio_resolution) ? ` (resolution ${sig(r.damping_ratio_resolution)})` : ""}. `
-        + "The damping ratio shown is the most they allow, the amplification factor the least, the margin API 684 asks the most. "
-        + "Read more speeds close to the critical speed, or with less noise, to resolve it.")));
+            : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`)),
+        warnings.filter((w) => aboutRow(w, r)).map((w) => identWarning(w, "tr"))]))) : h("p", { class: "hint" }, "No critical speed found."),
+      loose.length ? h("ul", { class: "ident-warnings" }, loose.map((w) => identWarning(w, "li"))) : "");
   };
   if (identification.cache && identification.cache.key === key) draw(identification.cache.res);
   else {
     api.identifyRotor(sessionJson()).then((res) => {
       identification.cache = { key, res };
       draw(res);
-    }, () => replace(box, h("p", { class: "hint" }, "The rotor could not be identified from these speeds (too few, or no resonance in the range).")));
+    }, (err) => replace(box, h("p", { class: "hint ident-error" }, `The rotor could not be identified from these speeds: ${err.message}`)));
   }
   return box;
 }

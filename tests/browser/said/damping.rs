@@ -2,7 +2,9 @@
 //! answers the damping ratio as an upper bound and the amplification factor
 //! as a lower one (`*_bound`), since the readings cannot tell the damping
 //! from zero. The form showed both as plain numbers (an amplification factor
-//! of some thousands as if measured).
+//! of some thousands as if measured), then the bounds with a note in its own
+//! words: the service's `damping_unresolved` warning, with the fitted ratio
+//! and its resolution, is now shown as said, under the result it concerns.
 
 use fieldbal::balancing::model::Unit;
 use serde_json::Value;
@@ -32,6 +34,13 @@ pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
     assert_eq!(r["amplification_factor_bound"], "lower", "{said}");
     let zeta = r["damping_ratio"].as_f64().unwrap();
     let factor = r["amplification_factor"].as_f64().unwrap();
+    let warned = said["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "damping_unresolved")
+        .unwrap_or_else(|| panic!("a damping_unresolved warning: {said}"));
+    let message = warned["message"].as_str().unwrap();
 
     let created = post(stand, "/api/v1/sessions", session.clone()).await;
     let id = created["id"].as_str().expect("stored");
@@ -46,7 +55,7 @@ pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
     b.wait_for("#step-solve .identification td.critical").await;
     let row: Value = js(
         b,
-        "return [...document.querySelectorAll('#step-solve .identification tbody tr td')].map((t) => t.textContent)",
+        "return [...document.querySelectorAll('#step-solve .identification tbody tr.ident-result td')].map((t) => t.textContent)",
     )
     .await;
     let cells: Vec<&str> = row
@@ -69,11 +78,11 @@ pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
         (shown - factor).abs() <= 0.5 + 1e-3 * factor,
         "AF {shown} for {factor}"
     );
-    let note = b
-        .text("#step-solve .identification .damping-unresolved")
-        .await;
-    assert!(
-        note.starts_with("Damping not resolved (1H, plane A, 2450 rpm)"),
-        "{note}"
-    );
+    // The service's own words, in the row right under the result.
+    let note: Value = js(
+        b,
+        "const r = document.querySelector('#step-solve .identification tr.ident-result'); const n = r.nextElementSibling; return n && n.matches('.ident-warning.damping-unresolved') ? n.textContent : null",
+    )
+    .await;
+    assert_eq!(note, Value::from(format!("⚠ {message}")), "{said}");
 }

@@ -1,8 +1,11 @@
 //! What the form says matches what the service means: a damping the readings
-//! cannot resolve is shown as the bound it is (`damping`), a solution's date
+//! cannot resolve is shown as the bound it is, with the service's warning
+//! (`damping`), a critical outside the speeds measured as extrapolated
+//! (`critical`), a solution's date
 //! in the one format of every other stored time (`dates`), and a trim job's
 //! set-up says it is one and with which coefficients (`trim`).
 
+mod critical;
 mod damping;
 mod dates;
 mod trim;
@@ -15,6 +18,8 @@ use crate::harness::stand::Stand;
 async fn the_form_says_what_the_service_means() {
     let mut stand = Stand::start().await;
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
+    stand.renew().await;
+    critical::a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(&stand).await;
     stand.renew().await;
     dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
     stand.renew().await;

@@ -10,10 +10,13 @@ const quoted = (message, fallback) => {
   return m ? `“${m[1]}”` : fallback;
 };
 
+/** Every run the message names ('T1', 'T2'), as “T1”, “T2”; "" when none. */
+const quotedAll = (message) => [...String(message || "").matchAll(/'([^']+)'/g)].map((m) => `“${m[1]}”`).join(", ");
+
 /** Per warning code: `[what happened, what to do]`. */
 const PLAIN = {
   trial_effect_small: (w) => [`The trial weight${w.plane ? ` in plane ${w.plane}` : ""} moved the vibration too little to measure its effect.`, "Repeat that trial run with a bigger trial weight (aim for at least 30 % change in amplitude or 30° in phase)."],
-  ill_conditioned: () => ["Two planes look almost the same to the sensors, so the corrections may be large and cancel each other.", "Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out planes the sensors cannot tell apart” in the options)."],
+  ill_conditioned: (w) => [`${w.plane ? `Plane ${w.plane} looks` : "Two planes look"} to the sensors almost the same as the other planes together, so the corrections may be large and cancel each other.`, "Use planes further apart, add a sensor at the other bearing, or solve with fewer planes (tick “leave out planes the sensors cannot tell apart” in the options)."],
   regions_unreliable: (w) => {
     const [alike, weak] = unreliableWhy(w);
     const what = [];
@@ -29,7 +32,7 @@ const PLAIN = {
   plane_undetermined: (w) => [`The readings cannot tell what plane ${w.plane || ""} needs: its trial weight changed nothing that the sensors see on their own.`, `Repeat the trial in plane ${w.plane || "that plane"} with a heavier weight or at a larger radius, add a sensor that sees it, or leave the plane out.`],
   uncertainty_approximate: () => ["With this objective or a mass limit that is reached, the 95 % figures are an estimate.", "Read them as the scatter to expect, not as exact bounds."],
   run_inconsistent: (w) => [`Run ${quoted(w.message, "")} does not agree with what the other runs predict for its weights, by more than the readings' scatter explains.`, "Check that run's weights (mass, angle, plane; a weight that fell off or was left on) and its readings; correct the run if one was typed wrong. A rotor that is not linear does this too."],
-  coefficients_disagree: () => ["The runs of this job do not agree with the stored coefficients of the machine.", "The rotor or its mounting may have changed since they were measured, or a weight was typed wrong: check the weights, or do trial runs for this job."],
+  coefficients_disagree: (w) => [`${quotedAll(w.message) ? `Run ${quotedAll(w.message)} does` : "The runs of this job do"} not agree with the coefficients this job is solved with (the machine's stored ones, or those supplied).`, "The rotor or its mounting may have changed since they were measured, or a weight was typed wrong: check the weights, or do trial runs for this job."],
   split_approximate: (w) => [`The correction${w.plane ? ` in plane ${w.plane}` : ""} cannot be split exactly over two neighbouring places.`, "Use the places shown and check with a run, or fit the weight at its free angle if the plane allows it."],
   fit_not_proven: () => ["The choice of kit weights is the best found in the time allowed, not proven the best.", "It is usually good enough; check with a run."],
 };
@@ -54,16 +57,20 @@ function unreliableWhy(w) {
   return [alike, weak];
 }
 
-/** `{what, todo}` for a warning. */
+/**
+ * `{what, todo, said}` for a warning: `said` is the service's own message,
+ * shown beside the plain words (it carries the figures: how small the trial's
+ * effect was, the mass bound, the χ²), null when `what` is already made of it.
+ */
 export function plainWarning(w) {
   const f = PLAIN[w.code];
   if (f) {
     const [what, todo] = f(w);
-    return { what, todo };
+    return { what, todo, said: w.message ? String(w.message) : null };
   }
   // An unknown code: the service's own sentence, without option names or code words.
   const text = String(w.message || "").replace(/`[^`]*`/g, "").replace(/\(?\b[a-z]+(?:[._][a-z0-9_]+)+\b\)?/g, "").replace(/\s+/g, " ").trim();
-  return { what: text ? text[0].toUpperCase() + text.slice(1) : "The service warned about this answer.", todo: "" };
+  return { what: text ? text[0].toUpperCase() + text.slice(1) : "The service warned about this answer.", todo: "", said: null };
 }
 
 /**

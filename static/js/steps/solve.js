@@ -48,6 +48,17 @@ function angleWords(conventions) {
   return conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
 }
 
+/**
+ * The warnings that name a plane, in a row under that plane's correction:
+ * they were only in the box above the answer, so the weight read off the
+ * table (a mass held at its limit, a split that cannot be exact) came
+ * without them.
+ */
+function planeWarnings(solution, plane) {
+  return (solution.warnings || []).filter((w) => w.plane === plane).map((w) => h("tr", { class: "plane-warning", dataset: { code: w.code, plane } },
+    h("td", { colspan: 6 }, `⚠ Plane ${plane}: ${plainWarning(w).what}`)));
+}
+
 export function correctionsTable(solution) {
   const words = angleWords(solution.conventions || state.setup.conventions);
   return h("table", { class: "corrections" },
@@ -55,14 +66,14 @@ export function correctionsTable(solution) {
     h("tbody", {}, solution.corrections.map((c) => {
       // A trim that leaves a plane as it is: no weight, so no angle to read (the trim words say so).
       const nothing = solution.from_run && c.mass_g < 0.05;
-      return h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : nothing ? "nothing" : null, title: doubt(solution, c) || null },
+      return [h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : nothing ? "nothing" : null, title: doubt(solution, c) || null },
       h("th", { class: "corr-plane" }, c.plane),
       h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g, 1)} g`),
       h("td", { class: "corr-angle" }, nothing ? "–" : fmtAngle(c.angle_deg)),
       h("td", { class: "corr-uncertainty" }, c.uncertainty ? [uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]), nothing ? null : unbiasedLine(c)] : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
       h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
-      );
+      ), planeWarnings(solution, c.plane)];
     })),
   );
 }
@@ -139,10 +150,14 @@ export function warningsBox(solution) {
   return h("div", { class: "warnings", role: "alert" },
     h("h3", {}, solution.warnings.length === 1 ? "1 warning — read before fitting weights" : `${solution.warnings.length} warnings — read before fitting weights`),
     h("ul", {}, solution.warnings.map((w) => {
-      const { what, todo } = plainWarning(w);
-      return h("li", { dataset: { code: w.code } },
+      const { what, todo, said } = plainWarning(w);
+      return h("li", { dataset: { code: w.code, plane: w.plane || "" } },
         what,
-        todo ? h("div", { class: "advice" }, `What to do: ${todo}`) : "");
+        todo ? h("div", { class: "advice" }, `What to do: ${todo}`) : "",
+        // The service's own message, a click away: it carries the figures
+        // (how small the trial's effect was, the mass bound, the χ²) and the
+        // names of planes and runs, in words written for the API's users.
+        said ? h("details", { class: "said" }, h("summary", {}, "The service's own words"), h("p", { class: "said-text" }, said)) : "");
     })),
   );
 }

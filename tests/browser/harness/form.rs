@@ -295,9 +295,12 @@ pub async fn store(b: &Browser) {
 pub async fn corrections_on_page(b: &Browser) -> Vec<(String, f64, f64)> {
     b.wait_for("#step-solve table.corrections tbody tr").await;
     let mut out = Vec::new();
+    // Not the rows of warnings under a plane's correction.
     for row in b
         .client
-        .find_all(Locator::Css("#step-solve table.corrections tbody tr"))
+        .find_all(Locator::Css(
+            "#step-solve table.corrections tbody tr:not(.plane-warning)",
+        ))
         .await
         .expect("rows")
     {

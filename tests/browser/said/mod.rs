@@ -3,12 +3,15 @@
 //! (`damping`), a critical outside the speeds measured as extrapolated
 //! (`critical`), a solution's date
 //! in the one format of every other stored time (`dates`), and a trim job's
-//! set-up says it is one and with which coefficients (`trim`).
+//! set-up says it is one and with which coefficients (`trim`); every warning
+//! of a solve with the service's message, beside the plane it names
+//! (`warnings`).
 
 mod critical;
 mod damping;
 mod dates;
 mod trim;
+mod warnings;
 
 use crate::harness::stand::Stand;
 
@@ -26,5 +29,7 @@ async fn the_form_says_what_the_service_means() {
     trim::a_trim_job_from_a_machine_says_so_at_its_set_up(&stand).await;
     stand.renew().await;
     trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
+    stand.renew().await;
+    warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
     stand.stop().await;
 }

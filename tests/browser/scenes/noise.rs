@@ -19,7 +19,7 @@ fn noise() -> Value {
 async fn unbiased_lines(b: &crate::harness::Browser) -> Vec<(String, Option<(String, String)>)> {
     let got = js(
         b,
-        "return [...document.querySelectorAll('#step-solve table.corrections tbody tr')].map((tr) => { \
+        "return [...document.querySelectorAll('#step-solve table.corrections tbody tr:not(.plane-warning)')].map((tr) => { \
            const u = tr.querySelector('td.corr-uncertainty .corr-unbiased'); \
            return [tr.dataset.plane, u ? [u.textContent, u.title] : null]; })",
     )

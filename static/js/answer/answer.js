@@ -6,7 +6,7 @@
 import { h } from "../page/dom.js";
 import { fmt, fmtAngle, commonUnit, unitLabel } from "../page/num.js";
 import { state } from "../job/state.js";
-import { correctionsTable, summaryBox, residualTable, residualNote, warningsBox, phaseWords } from "../steps/solve.js";
+import { correctionsTable, summaryBox, residualTable, residualNote, warningsBox, phaseWords, angleWords } from "../steps/solve.js";
 import { doubt } from "./words.js";
 import { planePicture } from "./planes.js";
 import { plotsSection } from "../plots/plots.js";
@@ -36,7 +36,7 @@ export function trimWords(sol) {
   if (!sol.from_run) return "";
   const run = state.runs.find((r) => r.id === sol.from_run);
   return h("div", { class: "trim" },
-    h("h3", {}, `Trim: the rotor as it is in run “${sol.from_run}”${run ? ` (${run.weights.length} weight${run.weights.length === 1 ? "" : "s"} on)` : ""}`),
+    h("h3", {}, `Trim: the rotor as it is in run “${sol.from_run}”${run ? ` (${run.weights.length} weight${run.weights.length === 1 ? "" : "s"} on)` : ""}; angles ${angleWords(sol.conventions || state.setup.conventions)} from the mark`),
     h("ul", {}, sol.corrections.map((c) => h("li", { dataset: { plane: c.plane } },
       // A doubtful trim is said, not shouted: no bold for a weight that may be far off.
       c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h(doubt(sol, c) ? "span" : "strong", { class: doubt(sol, c) ? "doubtful" : null }, `Plane ${c.plane}: add ${fmt(c.mass_g, 1)} g at ${fmtAngle(c.angle_deg)} to what is on now`),

@@ -8,7 +8,7 @@ import { h, replace, $ } from "../page/dom.js";
 import { fmt, fmtAngle, unitLabel } from "../page/num.js";
 import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
-import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox } from "./solve.js";
+import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox, angleWords } from "./solve.js";
 import { verdict, trimWords, runChecks, planePictures, doubts } from "../answer/answer.js";
 import { plotsSection } from "../plots/plots.js";
 
@@ -18,12 +18,15 @@ function fitTable(sol) {
   const optimal = sol.fit_summary && sol.fit_summary.optimal;
   return h("div", { class: "report-fit" },
     h("h4", {}, "Weights to fit"),
-    h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, "Angle, °"), h("th", {}, "Mass, g"))),
+    h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, `Angle, ° (${angleWords(sol.conventions || state.setup.conventions)})`), h("th", {}, "Mass, g"))),
       h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
         h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
           h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 2) : "–")))))),
     sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}, max ${fmt(sol.fit_summary.max_after, 2)}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
 }
+
+/** "(lag)" or "(lead)", for a column of phases. */
+const phaseOf = (c) => (c.phase === "lead" ? "(lead)" : "(lag)");
 
 function conventionWords(c) {
   return `phase ${c.phase}, weight angles ${c.angle_direction === "with_rotation" ? "with rotation" : "against rotation"}`;
@@ -69,7 +72,7 @@ function coefficientsTable(sol) {
   return [
     sol.coefficients_from ? h("p", {}, `Stored coefficients of machine ${sol.coefficients_from.machine}, version ${sol.coefficients_from.version ?? "latest"}.`) : h("p", {}, "Estimated from this job's runs by least squares."),
     h("table", { class: "report-coefficients" },
-      h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Amplitude per gram"), h("th", {}, "Phase, °"))),
+      h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Amplitude per gram"), h("th", {}, `Phase, ° ${phaseOf(sol.conventions || state.setup.conventions)}`))),
       h("tbody", {}, (sol.influence_coefficients || []).map((c) => h("tr", {},
         h("td", {}, fmt(c.speed_rpm, 0)), h("td", {}, c.sensor), h("td", {}, c.plane),
         h("td", {}, `${fmt(c.amplitude_per_g, 3)} ${unitLabel(units.get(c.sensor))}/g`), h("td", {}, fmt(c.phase_deg, 1)))))),
@@ -120,12 +123,12 @@ export function renderReport(root) {
           h("tbody", {}, setup.sensors.map((x) => h("tr", {}, h("td", {}, x.id), h("td", {}, unitLabel(x.unit)), h("td", {}, x.label || "–")))))),
       h("section", { class: "report-weights" },
         h("h3", {}, "Trial and correction weights"),
-        h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, "Radius"), h("th", {}, "Angle"), h("th", {}, "Place"))),
+        h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Plane"), h("th", {}, "Mass"), h("th", {}, "Radius"), h("th", {}, `Angle (${angleWords(setup.conventions)})`), h("th", {}, "Place"))),
           h("tbody", {}, runs.filter((r) => r.weights.length).map(weightRows)))),
       h("section", { class: "report-runs-section" },
         h("h3", {}, "Runs"),
         h("table", { class: "report-runs" },
-          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Weights"), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Unit"), h("th", {}, "Phase, °"))),
+          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Weights"), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Unit"), h("th", {}, `Phase, ° ${phaseOf(setup.conventions)}`))),
           h("tbody", {}, runs.map((run) => rows().map((row, i) => {
             const r = readingFor(run, row);
             // The run's name on every row: a page break may fall anywhere in it.

@@ -44,7 +44,8 @@ function unbiasedLine(c) {
   return h("div", { class: "corr-unbiased", title: UNBIASED_WORDS }, `without the noise's pull: ${fmt(b.mass_g, 1)} g at ${fmtAngle(b.angle_deg)}`);
 }
 
-function angleWords(conventions) {
+/** "with rotation" or "against rotation": how the weight angles are counted from the mark. */
+export function angleWords(conventions) {
   return conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
 }
 

@@ -54,7 +54,7 @@ export function suggestionBox(d, k, rerender) {
   if (s.loading) return h("div", { class: "suggestion" }, "Sizing a trial weight…");
   if (s.none) return h("div", { class: "suggestion none" }, `No trial weight can be suggested: ${s.none}. A trial weight should change the vibration by about 30 % (or its phase by 30°).`);
   return h("div", { class: "suggestion" },
-    h("h4", {}, "Suggested trial weights (about 30 % change in vibration)"),
+    h("h4", {}, `Suggested trial weights (about 30 % change in vibration; angles ${state.setup.conventions.angle_direction === "with_rotation" ? "with" : "against"} rotation from the mark)`),
     h("ul", {}, s.items.map((x) => h("li", { dataset: { plane: x.plane } },
       `Plane ${x.plane}: ${fmt(x.mass_g, 1)} g at ${fmtAngle(x.angle_deg)}`,
       x.weights ? ` — kit weights ${x.weights.map((m) => `${fmt(m, 1)} g`).join(" + ")} stacked at place ${x.place}` : "",

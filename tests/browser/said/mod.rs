@@ -5,8 +5,10 @@
 //! in the one format of every other stored time (`dates`), and a trim job's
 //! set-up says it is one and with which coefficients (`trim`); every warning
 //! of a solve with the service's message, beside the plane it names
-//! (`warnings`).
+//! (`warnings`); every angle of the answer and the report with its
+//! convention (`conventions`).
 
+mod conventions;
 mod critical;
 mod damping;
 mod dates;
@@ -31,5 +33,7 @@ async fn the_form_says_what_the_service_means() {
     trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
     stand.renew().await;
     warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
+    stand.renew().await;
+    conventions::every_angle_of_the_answer_and_report_says_its_convention(&stand).await;
     stand.stop().await;
 }

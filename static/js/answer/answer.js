@@ -58,6 +58,12 @@ function checkRow(r) {
     h("td", { class: "unit" }, unitOf(r.sensor)));
 }
 
+/** " µm pk-pk" when every row of `rows` (with a `sensor`) reads in that unit; "" when they mix units. */
+function rowsUnit(rows) {
+  const u = commonUnit((rows || []).map((r) => ({ unit: (state.setup.sensors.find((s) => s.id === r.sensor) || {}).unit })));
+  return u ? ` ${u}` : "";
+}
+
 /** Each check run (any run the others predict) beside its prediction. */
 export function runChecks(sol) {
   if (!sol.run_checks || !sol.run_checks.length) return "";
@@ -65,8 +71,8 @@ export function runChecks(sol) {
     h("h3", {}, "Runs beside their predictions"),
     sol.run_checks.map((c) => h("div", { class: `run-check ${c.consistent ? "agrees" : "differs"}`, dataset: { run: c.run } },
       h("p", {}, h("strong", {}, `Run “${c.run}”: `), c.consistent
-        ? `agrees with what the other runs predict for its weights (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted).`
-        : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)} measured, ${fmt(c.rms_predicted, 1)} predicted). Check its weights and readings.`),
+        ? `agrees with what the other runs predict for its weights (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted).`
+        : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted). Check its weights and readings.`),
       h("div", { class: "scroll" }, h("table", { class: "check-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, `Measured, at phase ${phaseWords(sol)}`), h("th", {}, `Predicted, at phase ${phaseWords(sol)}`), h("th", {}, "95 % bound"), h("th", {}, "Unit"))),
         h("tbody", {}, c.rows.map(checkRow)))),
@@ -115,8 +121,10 @@ export function planePictures(sol) {
 function fitSummary(sol) {
   const f = sol.fit_summary;
   if (!sol.fit || !f) return "";
+  const unit = commonUnit(sol.predicted_residual);
+  const u = unit ? ` ${unit}` : "";
   return h("p", { class: "fit-summary" },
-    `With the kit weights shown: RMS ${fmt(f.rms_after, 2)}, largest ${fmt(f.max_after, 2)} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 2)}). `,
+    `With the kit weights shown: RMS ${fmt(f.rms_after, 2)}${u}, largest ${fmt(f.max_after, 2)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 2)}${u}). `,
     f.optimal ? "The best choice the kits allow." : "The best choice found in the time allowed, not proven the best.");
 }
 

@@ -5,7 +5,7 @@
 // Print CSS shows only this section on paper.
 
 import { h, replace, $ } from "../page/dom.js";
-import { fmt, fmtAngle, unitLabel } from "../page/num.js";
+import { fmt, fmtAngle, unitLabel, commonUnit } from "../page/num.js";
 import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox, angleWords } from "./solve.js";
@@ -16,13 +16,15 @@ import { plotsSection } from "../plots/plots.js";
 function fitTable(sol) {
   if (!sol.fit) return "";
   const optimal = sol.fit_summary && sol.fit_summary.optimal;
+  const unit = commonUnit(sol.predicted_residual);
+  const u = unit ? ` ${unit}` : "";
   return h("div", { class: "report-fit" },
     h("h4", {}, "Weights to fit"),
     h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, `Angle, ° (${angleWords(sol.conventions || state.setup.conventions)})`), h("th", {}, "Mass, g"))),
       h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
         h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
           h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 2) : "–")))))),
-    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}, max ${fmt(sol.fit_summary.max_after, 2)}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
+    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}${u}, max ${fmt(sol.fit_summary.max_after, 2)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
 }
 
 /** "(lag)" or "(lead)", for a column of phases. */

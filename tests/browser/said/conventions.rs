@@ -24,14 +24,11 @@ async fn headers_without_convention(b: &crate::harness::Browser, css: &str) -> V
     .await
 }
 
-pub async fn every_angle_of_the_answer_and_report_says_its_convention(stand: &Stand) {
-    let b = &stand.browser;
+/// `session` with a check run "check 1" fitted with 80 % of each correction
+/// the service gives, so that a trim is left to add.
+pub async fn with_a_check_run(stand: &Stand, mut session: Value) -> Value {
     let url = stand.server.url("");
     let url = url.trim_end_matches('/');
-    let (mut session, _) = example_session("pump-two-plane-exact.json");
-    assert_eq!(session["conventions"]["angle_direction"], "with_rotation");
-    assert_eq!(session["conventions"]["phase"], "lead");
-    // The check run: 80 % of each correction fitted, so a trim is left to add.
     let free = post(
         stand,
         "/api/v1/solve",
@@ -47,6 +44,15 @@ pub async fn every_angle_of_the_answer_and_report_says_its_convention(stand: &St
     let mut check = named(predicted(url, &session, &json!(on)).await, "check 1");
     check["purpose"] = json!("check");
     session["runs"].as_array_mut().unwrap().push(check);
+    session
+}
+
+pub async fn every_angle_of_the_answer_and_report_says_its_convention(stand: &Stand) {
+    let b = &stand.browser;
+    let (session, _) = example_session("pump-two-plane-exact.json");
+    assert_eq!(session["conventions"]["angle_direction"], "with_rotation");
+    assert_eq!(session["conventions"]["phase"], "lead");
+    let session = with_a_check_run(stand, session).await;
     let created = post(stand, "/api/v1/sessions", session.clone()).await;
     let id = created["id"].as_str().expect("stored").to_string();
     b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))

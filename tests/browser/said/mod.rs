@@ -6,13 +6,14 @@
 //! set-up says it is one and with which coefficients (`trim`); every warning
 //! of a solve with the service's message, beside the plane it names
 //! (`warnings`); every angle of the answer and the report with its
-//! convention (`conventions`).
+//! convention (`conventions`), every amplitude with its unit (`units`).
 
 mod conventions;
 mod critical;
 mod damping;
 mod dates;
 mod trim;
+mod units;
 mod warnings;
 
 use crate::harness::stand::Stand;
@@ -35,5 +36,7 @@ async fn the_form_says_what_the_service_means() {
     warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
     stand.renew().await;
     conventions::every_angle_of_the_answer_and_report_says_its_convention(&stand).await;
+    stand.renew().await;
+    units::every_amplitude_of_the_answer_says_its_unit(&stand).await;
     stand.stop().await;
 }

@@ -1,0 +1,45 @@
+//! Every amplitude of the answer says its unit. The pump job (µm pk-pk)
+//! with kits and a check run: the run's verdict gave "RMS 41.2 measured,
+//! 39.8 predicted" and the kit fit "RMS 3.21, largest 5.02 predicted after",
+//! in the answer and in the report, without the unit the residual table
+//! beside them gives.
+
+use serde_json::json;
+
+use super::conventions::with_a_check_run;
+use crate::harness::stand::{example_session, post, Stand};
+
+pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for p in session["planes"].as_array_mut().unwrap() {
+        p["positions"] = json!(12);
+        p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
+    }
+    let session = with_a_check_run(stand, session).await;
+    let created = post(stand, "/api/v1/sessions", session).await;
+    let id = created["id"].as_str().expect("stored").to_string();
+    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
+        .await;
+    b.wait_until(
+        "the job is open",
+        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
+    )
+    .await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .run-check p").await;
+    let check = b.text("#step-solve .run-check p").await;
+    assert!(
+        check.contains("µm pk-pk measured") && check.contains("µm pk-pk predicted"),
+        "{check}"
+    );
+    let fitted = b.text("#step-solve .fit-summary").await;
+    assert_eq!(fitted.matches("µm pk-pk").count(), 3, "{fitted}");
+
+    b.click("nav [data-step=\"report\"]").await;
+    b.wait_for("#step-report .report-fit").await;
+    let fitted = b.text("#step-report .report-fit p").await;
+    assert_eq!(fitted.matches("µm pk-pk").count(), 2, "{fitted}");
+    let check = b.text("#step-report .run-check p").await;
+    assert!(check.contains("µm pk-pk measured"), "{check}");
+}

@@ -79,6 +79,7 @@ export const api = {
   listMachines: (limit = 100, offset = 0) => call("GET", `/machines?limit=${limit}&offset=${offset}`),
   getMachine: (id) => call("GET", `/machines/${encodeURIComponent(id)}`),
   createMachine: (machine) => call("POST", "/machines", machine),
+  getCoefficients: (id) => call("GET", `/machines/${encodeURIComponent(id)}/coefficients`),
   poolCoefficients: (id, sessions) => call("POST", `/machines/${encodeURIComponent(id)}/coefficients`, { sessions }),
   solve: (id, options) => call("POST", `/sessions/${encodeURIComponent(id)}/solutions`, options || {}),
 };

@@ -10,6 +10,7 @@ import { fmt, storedAt } from "../page/num.js";
 import { pagedList } from "../page/paged.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
+import { plainWarning } from "../answer/words.js";
 
 /**
  * A machine's name, or "" when it has none. A machine is stored without a
@@ -75,6 +76,33 @@ async function setupOfLatest(machine) {
   return setup;
 }
 
+/**
+ * The warnings of the machine's latest coefficient version, which a trim job
+ * from the stored coefficients uses: jobs whose coefficients disagree with
+ * the others' (named by their job names), in plain words with the service's
+ * own beside them. The form stored a version pooled from jobs that disagree
+ * and showed the page as if all were well.
+ */
+function poolWarnings(latest, sessions) {
+  const warnings = (latest && latest.warnings) || [];
+  if (!warnings.length) return "";
+  const names = new Map(sessions.map((x) => [x.id, x.name || x.id]));
+  const jobs = (message) => [...String(message || "").matchAll(/'([^']+)'/g)].map((m) => `“${names.get(m[1]) || m[1]}”`);
+  return h("div", { class: "warnings pool-warnings", role: "alert" },
+    h("h4", {}, `Coefficient version ${latest.version}: ${warnings.length === 1 ? "a warning" : `${warnings.length} warnings`}`),
+    h("ul", {}, warnings.map((w) => {
+      const named = jobs(w.message);
+      const what = w.code === "coefficients_disagree"
+        ? [`Job${named.length === 1 ? "" : "s"} ${named.join(" and ")} ${named.length === 1 ? "does" : "do"} not agree with the other jobs' coefficients by more than the readings' scatter explains: the rotor, its mounting or its speed may have changed, or a weight was typed wrong.`,
+          "Check those jobs' weights and readings before a trim job uses these coefficients; a trim job's check run will show whether they still hold."]
+        : [plainWarning(w).what, plainWarning(w).todo];
+      return h("li", { dataset: { code: w.code } },
+        what[0],
+        what[1] ? h("div", { class: "advice" }, `What to do: ${what[1]}`) : "",
+        h("details", { class: "said" }, h("summary", {}, "The service's own words"), h("p", { class: "said-text" }, w.message)));
+    })));
+}
+
 async function machinePage(root, id, go) {
   replace(root, h("h2", {}, `Machine ${id}`), h("p", {}, "Loading…"));
   let m;
@@ -86,6 +114,8 @@ async function machinePage(root, id, go) {
   const sessions = [...(m.sessions || [])].sort((a, b) => String(a.created_at).localeCompare(String(b.created_at)));
   const coefficients = m.coefficients || [];
   const solved = sessions.filter((x) => x.summary).map((x) => x.id);
+  // The latest version's warnings; the page is whole without them.
+  const latest = coefficients.length ? await api.getCoefficients(id).catch(() => null) : null;
   replace(root,
     h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),
     m.rotor ? h("p", {}, `Rotor: ${fmt(m.rotor.mass_kg, 0)} kg, service speed ${fmt(m.rotor.service_speed_rpm, 0)} rpm${m.rotor.balance_grade ? `, balance grade ${m.rotor.balance_grade}` : ""}.`) : "",
@@ -114,6 +144,7 @@ async function machinePage(root, id, go) {
       : h("table", { class: "coeff-versions" },
         h("thead", {}, h("tr", {}, h("th", {}, "Version"), h("th", {}, "Stored"), h("th", {}, "From jobs"))),
         h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, storedAt(c.created_at)), h("td", {}, String((c.sessions || []).length)))))),
+    poolWarnings(latest, sessions),
   );
 }
 

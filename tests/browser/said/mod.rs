@@ -6,12 +6,14 @@
 //! set-up says it is one and with which coefficients (`trim`); every warning
 //! of a solve with the service's message, beside the plane it names
 //! (`warnings`); every angle of the answer and the report with its
-//! convention (`conventions`), every amplitude with its unit (`units`).
+//! convention (`conventions`), every amplitude with its unit (`units`);
+//! coefficients pooled from jobs that disagree say so (`pooled`).
 
 mod conventions;
 mod critical;
 mod damping;
 mod dates;
+mod pooled;
 mod trim;
 mod units;
 mod warnings;
@@ -38,5 +40,7 @@ async fn the_form_says_what_the_service_means() {
     conventions::every_angle_of_the_answer_and_report_says_its_convention(&stand).await;
     stand.renew().await;
     units::every_amplitude_of_the_answer_says_its_unit(&stand).await;
+    stand.renew().await;
+    pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
     stand.stop().await;
 }

@@ -26,7 +26,8 @@ async function call(method, path, body, retried, extra) {
   try {
     resp = await fetch(BASE + path, init);
   } catch (e) {
-    throw new ApiError(0, "network", "The fieldbal service does not answer. Is `fieldbal serve` running?");
+    // Plain words on the stand PC: the command, not a code span with backticks.
+    throw new ApiError(0, "network", "The fieldbal service does not answer: is it running on this PC (the command fieldbal serve)?");
   }
   const text = await resp.text();
   let data = null;

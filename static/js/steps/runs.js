@@ -195,6 +195,10 @@ async function store(root, rerender) {
     state.etag = (await api.getSessionTagged(state.id)).etag;
   } catch (err) {
     if (err instanceof ApiError && err.status === 412) return conflict(root, rerender);
+    // Say what became of the run, not only that the service is away.
+    if (err instanceof ApiError && err.code === "network") {
+      return banner(root, "error", "The fieldbal service does not answer, so the run was not stored. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again.");
+    }
     const prefix = state.id === null ? "" : `runs[${k}].`;
     if (!markServerError(err, prefix)) banner(root, "error", err.message);
     else banner(root, "error", "The service did not accept the run; the field is marked.");

@@ -7,7 +7,8 @@
 //! of a solve with the service's message, beside the plane it names
 //! (`warnings`); every angle of the answer and the report with its
 //! convention (`conventions`), every amplitude with its unit (`units`);
-//! coefficients pooled from jobs that disagree say so (`pooled`).
+//! coefficients pooled from jobs that disagree say so (`pooled`); a run
+//! typed while the service is away is kept and stored later (`unreachable`).
 
 mod conventions;
 mod critical;
@@ -16,6 +17,7 @@ mod dates;
 mod pooled;
 mod trim;
 mod units;
+mod unreachable;
 mod warnings;
 
 use crate::harness::stand::Stand;
@@ -42,5 +44,7 @@ async fn the_form_says_what_the_service_means() {
     units::every_amplitude_of_the_answer_says_its_unit(&stand).await;
     stand.renew().await;
     pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
+    stand.renew().await;
+    unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;
     stand.stop().await;
 }

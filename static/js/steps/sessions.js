@@ -42,20 +42,31 @@ export function readingsCsv() {
   return csv(out);
 }
 
+/**
+ * The solution as CSV: corrections (and their bias-corrected estimates),
+ * the predicted residual per sensor and speed with its unit and the phases'
+ * convention, and every warning in the service's words ("code: message", in
+ * the last column, `note`). The unit, the phase convention and the warnings
+ * were left out: an engineer reading the file alone could not tell µm from
+ * mils, lag from lead, or that a trial was too small to trust.
+ */
 export function resultsCsv() {
   const sol = state.solution;
-  const dir = state.setup.conventions.angle_direction;
-  const out = [["kind", "plane_or_sensor", "speed_rpm", "mass_g", `angle_deg (${dir})`, "unbalance_gmm", "mass_95_lo", "mass_95_hi", "amplitude_before", "amplitude_after", "amplitude_95", "phase_deg"]];
+  const conventions = sol.conventions || state.setup.conventions;
+  const out = [["kind", "plane_or_sensor", "speed_rpm", "mass_g", `angle_deg (${conventions.angle_direction})`, "unbalance_gmm", "mass_95_lo", "mass_95_hi", "amplitude_before", "amplitude_after", "amplitude_95", `phase_deg (${conventions.phase})`, "unit", "note"]];
   for (const c of sol.corrections) {
     const u = c.uncertainty;
-    out.push(["correction", c.plane, "", c.mass_g, c.angle_deg, c.unbalance_gmm ?? "", u ? u.mass_g[0] : "", u ? u.mass_g[1] : "", "", "", "", ""]);
+    out.push(["correction", c.plane, "", c.mass_g, c.angle_deg, c.unbalance_gmm ?? "", u ? u.mass_g[0] : "", u ? u.mass_g[1] : "", "", "", "", "", "", ""]);
     // The errors-in-variables estimate C* beside it (method.md 8.11), when the
     // noise is stated or measured: a row of its own, in the same columns.
     const b = u && u.bias_corrected;
-    if (b) out.push(["bias_corrected", c.plane, "", b.mass_g, b.angle_deg, "", "", "", "", "", "", ""]);
+    if (b) out.push(["bias_corrected", c.plane, "", b.mass_g, b.angle_deg, "", "", "", "", "", "", "", "", ""]);
   }
   for (const r of sol.predicted_residual) {
-    out.push(["residual", r.sensor, r.speed_rpm, "", "", "", "", "", r.amplitude_before, r.amplitude, r.amplitude_95 ?? "", r.phase_deg]);
+    out.push(["residual", r.sensor, r.speed_rpm, "", "", "", "", "", r.amplitude_before, r.amplitude, r.amplitude_95 ?? "", r.phase_deg, r.unit ?? "", ""]);
+  }
+  for (const w of sol.warnings || []) {
+    out.push(["warning", w.plane ?? "", "", "", "", "", "", "", "", "", "", "", "", `${w.code}: ${w.message}`]);
   }
   return csv(out);
 }

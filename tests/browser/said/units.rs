@@ -2,12 +2,14 @@
 //! with kits and a check run: the run's verdict gave "RMS 41.2 measured,
 //! 39.8 predicted" and the kit fit "RMS 3.21, largest 5.02 predicted after",
 //! in the answer and in the report, without the unit the residual table
-//! beside them gives.
+//! beside them gives. The results CSV had no unit for its amplitudes and
+//! no convention for its phases.
 
 use serde_json::json;
 
 use super::conventions::with_a_check_run;
 use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::steps::js_async;
 
 pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
     let b = &stand.browser;
@@ -42,4 +44,31 @@ pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
     assert_eq!(fitted.matches("µm pk-pk").count(), 2, "{fitted}");
     let check = b.text("#step-report .run-check p").await;
     assert!(check.contains("µm pk-pk measured"), "{check}");
+
+    // The results CSV: each residual row with its unit, the phases with their convention.
+    let csv = js_async(
+        b,
+        "const [done] = arguments; import('/static/js/steps/sessions.js').then((m) => done(m.resultsCsv()));",
+    )
+    .await;
+    let csv = csv.as_str().expect("CSV text");
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let unit = header
+        .iter()
+        .position(|h| *h == "\"unit\"")
+        .unwrap_or_else(|| panic!("no unit column: {csv}"));
+    assert!(
+        header.contains(&"\"phase_deg (lead)\""),
+        "the phases' convention: {csv}"
+    );
+    let residuals: Vec<Vec<&str>> = csv
+        .lines()
+        .filter(|l| l.starts_with("\"residual\""))
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(residuals.len(), 4, "{csv}");
+    for row in residuals {
+        assert_eq!(row.len(), header.len(), "{row:?}");
+        assert_eq!(row[unit], "\"um_pp\"", "{row:?}");
+    }
 }

@@ -6,13 +6,13 @@
 //! the figures the service gives (the trial's effect in %, how much heavier
 //! to make it, the bound) and, for some codes, the plane; and a warning that
 //! names a plane was only in the box above the answer, not beside the weight
-//! read off the table.
+//! read off the table. The results CSV left the warnings out.
 
 use serde_json::{json, Value};
 
 use crate::harness::form::{field, type_into};
 use crate::harness::stand::{example_session, get, post, Stand};
-use crate::harness::steps::js;
+use crate::harness::steps::{js, js_async};
 
 pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stand: &Stand) {
     let b = &stand.browser;
@@ -101,6 +101,33 @@ pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stan
         .text("#step-solve .warnings li[data-code=\"trial_effect_small\"] .said-text")
         .await;
     assert!(said.contains("changed the vibration by at most"), "{said}");
+
+    // The results CSV carries each warning, in the service's words.
+    let csv = js_async(
+        b,
+        "const [done] = arguments; import('/static/js/steps/sessions.js').then((m) => done(m.resultsCsv()));",
+    )
+    .await;
+    let csv = csv.as_str().expect("CSV text");
+    let header = csv.lines().next().unwrap();
+    let rows: Vec<&str> = csv
+        .lines()
+        .filter(|l| l.starts_with("\"warning\""))
+        .collect();
+    assert_eq!(rows.len(), warnings.len(), "{csv}");
+    for (w, row) in warnings.iter().zip(&rows) {
+        let plane = w["plane"].as_str().unwrap_or("");
+        assert!(
+            row.starts_with(&format!("\"warning\",\"{plane}\",")),
+            "{row}"
+        );
+        let message = w["message"].as_str().unwrap().replace('"', "\"\"");
+        assert!(
+            row.ends_with(&format!("\"{}: {message}\"", w["code"].as_str().unwrap())),
+            "{row}"
+        );
+        assert!(header.ends_with("\"note\""), "{header}");
+    }
 
     // Beside the plane: the rows right under each plane's correction.
     for plane in ["inboard", "outboard"] {

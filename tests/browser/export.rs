@@ -78,7 +78,7 @@ async fn a_typed_session_exports_as_the_same_json_and_its_readings_and_results_a
         "a header and a line per run and sensor:\n{readings}"
     );
     assert!(
-        lines[0].starts_with("\"run\",\"weights\",\"speed_rpm\""),
+        lines[0].starts_with("\"run\",\"weights (angles with_rotation)\",\"speed_rpm\""),
         "{}",
         lines[0]
     );

@@ -130,7 +130,7 @@ export function renderReport(root) {
       h("section", { class: "report-runs-section" },
         h("h3", {}, "Runs"),
         h("table", { class: "report-runs" },
-          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, "Weights"), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Unit"), h("th", {}, `Phase, ° ${phaseOf(setup.conventions)}`))),
+          h("thead", {}, h("tr", {}, h("th", {}, "Run"), h("th", {}, `Weights (angles ${angleWords(setup.conventions)})`), h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Amplitude"), h("th", {}, "Unit"), h("th", {}, `Phase, ° ${phaseOf(setup.conventions)}`))),
           h("tbody", {}, runs.map((run) => rows().map((row, i) => {
             const r = readingFor(run, row);
             // The run's name on every row: a page break may fall anywhere in it.

@@ -259,6 +259,9 @@ function grid(rerender) {
   const sensorsById = new Map(state.setup.sensors.map((x) => [x.id, x]));
   const kinds = runKinds();
   return h("div", { class: "scroll grid-wrap" }, h("table", { class: "grid" },
+    // The runs' weights in the headers ("inboard: 30.0 g at 0.0°") and the
+    // phases below: their conventions said once, above them.
+    h("caption", { class: "grid-caption" }, `Weight angles ${angleWords()} from the mark; phases ${state.setup.conventions.phase === "lead" ? "lead" : "lag"}.`),
     h("thead", {},
       h("tr", {}, h("th", { rowspan: 2 }, "Speed, rpm"), h("th", { rowspan: 2 }, "Sensor"),
         columns.map((c) => h("th", { colspan: 2, class: c.editing ? "run editing" : "run", dataset: { run: c.editing ? d.id || "" : c.run.id } },

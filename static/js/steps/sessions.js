@@ -31,7 +31,7 @@ function csv(rowsOut) {
 }
 
 export function readingsCsv() {
-  const out = [["run", "weights", "speed_rpm", "sensor", "unit", "amplitude", `phase_deg (${state.setup.conventions.phase})`]];
+  const out = [["run", `weights (angles ${state.setup.conventions.angle_direction})`, "speed_rpm", "sensor", "unit", "amplitude", `phase_deg (${state.setup.conventions.phase})`]];
   const units = new Map(state.setup.sensors.map((x) => [x.id, x.unit]));
   for (const run of state.runs.filter((r) => r.stored)) {
     for (const row of rows()) {

@@ -4,7 +4,9 @@
 //! by one weight of … at …°" came above the table whose header says the
 //! direction, without it; the report's tables of weights to fit, weights,
 //! readings and coefficients headed their columns "Angle" and "Phase, °"
-//! only; and the suggested trial weight ("20.0 g at 0.0°") said neither.
+//! only; the suggested trial weight ("20.0 g at 0.0°") said neither; nor
+//! did each run's weights ("inboard: 30.0 g at 0.0°") in the runs grid, the
+//! report's runs table and the readings CSV.
 
 use serde_json::{json, Value};
 
@@ -75,6 +77,31 @@ pub async fn every_angle_of_the_answer_and_report_says_its_convention(stand: &St
     assert!(trim.contains("with rotation"), "{trim}");
     let bare = headers_without_convention(b, "#step-report").await;
     assert_eq!(bare, json!([]), "in the report");
+
+    // The runs: each run's weights in the grid's headers, in the report and
+    // in the readings CSV.
+    let weights_header: serde_json::Value = js(
+        b,
+        "return [...document.querySelectorAll('#step-report th')].map((t) => t.textContent).filter((t) => /^Weights/.test(t))",
+    )
+    .await;
+    assert_eq!(weights_header, json!(["Weights (angles with rotation)"]));
+    let csv = crate::harness::steps::js_async(
+        b,
+        "const [done] = arguments; import('/static/js/steps/sessions.js').then((m) => done(m.readingsCsv()));",
+    )
+    .await;
+    let header = csv.as_str().unwrap().lines().next().unwrap().to_string();
+    assert!(
+        header.starts_with("\"run\",\"weights (angles with_rotation)\","),
+        "{header}"
+    );
+    b.click("nav [data-step=\"runs\"]").await;
+    let caption = b.text("#step-runs table.grid caption").await;
+    assert_eq!(
+        caption,
+        "Weight angles with rotation from the mark; phases lead."
+    );
 
     // A new job's suggested trial weight, from the rotor's data.
     let (mut fresh, _) = example_session("pump-two-plane-exact.json");

@@ -148,4 +148,18 @@ pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stan
             assert!(text.starts_with(&format!("⚠ Plane {plane}: ")), "{text}");
         }
     }
+
+    // On paper the plain words stand; the service's words (a click on
+    // screen) are left off, so the answer keeps to its first page.
+    b.click("nav [data-step=\"report\"]").await;
+    b.wait_for("#step-report .report-answer .warnings li").await;
+    b.emulate_print(true).await;
+    let printed: Value = js(
+        b,
+        "const li = document.querySelector('#step-report .report-answer .warnings li'); \
+         return [getComputedStyle(li).display, getComputedStyle(li.querySelector('details.said')).display]",
+    )
+    .await;
+    b.emulate_print(false).await;
+    assert_eq!(printed, json!(["list-item", "none"]), "in print");
 }

@@ -11,8 +11,7 @@ use serde_json::Value;
 use crate::harness::stand::{post, Stand};
 use crate::harness::steps::js;
 
-#[path = "../../identification/support.rs"]
-mod jeffcott;
+use super::jeffcott;
 
 pub async fn a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(stand: &Stand) {
     let b = &stand.browser;

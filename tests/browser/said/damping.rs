@@ -12,8 +12,7 @@ use serde_json::Value;
 use crate::harness::stand::{post, Stand};
 use crate::harness::steps::js;
 
-#[path = "../../identification/support.rs"]
-mod jeffcott;
+use super::jeffcott;
 
 pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
     let b = &stand.browser;

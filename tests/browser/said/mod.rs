@@ -20,6 +20,10 @@ mod units;
 mod unreachable;
 mod warnings;
 
+/// Jeffcott rotors for the identification scenes (`damping`, `critical`).
+#[path = "../../identification/support.rs"]
+mod jeffcott;
+
 use crate::harness::stand::Stand;
 
 /// One browser for every scene (CI time); each scene gets a new server and

@@ -277,13 +277,16 @@ function grid(rerender) {
         if (c.editing) {
           const cell = d.cells[r];
           return [
-            h("td", { class: "cell" }, numberInput({ field: `runs[${k}].readings[${r}].amplitude`, kind: "amplitude", value: cell.amplitude, label: `${row.sensor} at ${row.speed} rpm, amplitude`, onValue: (v) => (cell.amplitude = v) })),
+            h("td", { class: "cell" }, numberInput({ field: `runs[${k}].readings[${r}].amplitude`, kind: "amplitude", value: cell.amplitude, label: `${row.sensor} at ${row.speed} rpm, amplitude`, onValue: (v) => (cell.amplitude = v) }),
+              cell.samples && cell.samples.length ? h("small", { class: "samples" }, `mean of ${cell.samples.length}: a new value replaces them`) : ""),
             h("td", { class: "cell" }, numberInput({ field: `runs[${k}].readings[${r}].phase_deg`, kind: "phase", value: cell.phase_deg, label: `${row.sensor} at ${row.speed} rpm, phase`, onValue: (v) => (cell.phase_deg = v) })),
           ];
         }
         const reading = readingFor(c.run, row);
         // As typed (fmtReading), not rounded: the technician compares them with the analyser.
-        return [h("td", { class: "value amp" }, reading ? fmtReading(reading.amplitude) : "–"), h("td", { class: "value phase" }, reading ? fmtReading(reading.phase_deg) : "–")];
+        // A mean of repeated samples says so: the 95 % figures take their scatter from them.
+        const n = reading && Array.isArray(reading.samples) ? reading.samples.length : 0;
+        return [h("td", { class: "value amp" }, reading ? fmtReading(reading.amplitude) : "–", n ? h("small", { class: "samples" }, `mean of ${n}`) : ""), h("td", { class: "value phase" }, reading ? fmtReading(reading.phase_deg) : "–")];
       }),
     ))),
   ));

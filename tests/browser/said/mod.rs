@@ -8,13 +8,15 @@
 //! (`warnings`); every angle of the answer and the report with its
 //! convention (`conventions`), every amplitude with its unit (`units`);
 //! coefficients pooled from jobs that disagree say so (`pooled`); a run
-//! typed while the service is away is kept and stored later (`unreachable`).
+//! typed while the service is away is kept and stored later (`unreachable`);
+//! readings with repeated samples say so in the grid (`samples`).
 
 mod conventions;
 mod critical;
 mod damping;
 mod dates;
 mod pooled;
+mod samples;
 mod trim;
 mod units;
 mod unreachable;
@@ -50,5 +52,7 @@ async fn the_form_says_what_the_service_means() {
     pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
     stand.renew().await;
     unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;
+    stand.renew().await;
+    samples::readings_with_samples_say_so_in_the_grid(&stand).await;
     stand.stop().await;
 }

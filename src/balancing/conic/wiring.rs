@@ -56,6 +56,9 @@ pub fn correction(
         .map(|&j| limits.and_then(|l| l.get(&session.planes[j].id).copied()))
         .collect();
     let objective = options.objective.unwrap_or_default();
+    // The unbounded least-squares residual, to tell a bound that costs
+    // vibration from one that planes of the same effect make up for.
+    let mut free_residual = None;
     if objective == Objective::LeastSquares {
         if bounds.iter().all(Option::is_none) {
             return Ok(None);
@@ -70,11 +73,26 @@ pub fn correction(
         if within {
             return Ok(Some((x, Vec::new())));
         }
+        free_residual = Some((a * &x + b).norm());
     }
     let solved = solve_cone_conditioned(condition, a, b, objective, &bounds)?;
     let what = match objective {
         Objective::LeastSquares => "least-squares",
         Objective::MinMax => "min-max",
+    };
+    // Binding but free: dependent planes (the same effect on every sensor)
+    // take what the bounded one may not, and the residual stays the
+    // unbounded one (to the polished answer's precision).
+    let costs_nothing = free_residual.is_some_and(|free| {
+        let bounded = (a * &solved.x + b).norm();
+        bounded <= free + 1e-9 * b.norm().max(free)
+    });
+    let consequence = |id: &str| {
+        if costs_nothing {
+            "but planes with the same effect on the sensors take the rest, so the predicted vibration is the same as without the bound".to_string()
+        } else {
+            format!("so the predicted vibration is higher than without the bound. If the plane can take more mass (a heavier weight, or a larger radius), raising max_mass_g for {id} can lower it")
+        }
     };
     let warnings = planes
         .iter()
@@ -85,7 +103,8 @@ pub fn correction(
         .map(|(id, m)| Warning {
             code: "mass_limit_active".to_string(),
             message: format!(
-                "the bound of {m} g on plane {id} is binding: the {what} correction there is held at {m} g, less than it would otherwise put there, so the predicted vibration is higher than without the bound. If the plane can take more mass (a heavier weight, or a larger radius), raising max_mass_g for {id} can lower it"
+                "the bound of {m} g on plane {id} is binding: the {what} correction there is held at {m} g, less than it would otherwise put there, {}",
+                consequence(id)
             ),
             plane: Some(id.clone()),
         })

@@ -176,3 +176,28 @@ fn least_squares_on_exactly_dependent_planes_splits_least_norm_under_a_binding_b
         );
     }
 }
+
+#[test]
+fn a_binding_bound_that_costs_no_vibration_says_so() {
+    // Session 20: on two identical planes a bound on one is binding, but the
+    // other takes the rest and the residual is the unbounded one; the
+    // warning said the predicted vibration was higher than without it.
+    let (session, options) = dependent_pump();
+    let free = solve(&session, &options);
+    let total = mass(&free, "inboard") + mass(&free, "outboard");
+    let got = solve(
+        &session,
+        &with(&options, json!({"max_mass_g": {"inboard": total / 4.0}})),
+    );
+    let warning = got
+        .warnings
+        .iter()
+        .find(|w| w.code == "mass_limit_active")
+        .unwrap_or_else(|| panic!("no mass_limit_active: {:?}", got.warnings));
+    assert_eq!(warning.plane.as_deref(), Some("inboard"));
+    assert!(
+        !warning.message.contains("higher") && warning.message.contains("same"),
+        "{}",
+        warning.message
+    );
+}

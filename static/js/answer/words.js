@@ -27,7 +27,9 @@ const PLAIN = {
     if (alike) todo.push("Fit the weights, then do a check run and trim; better, add a sensor or speed that tells the planes apart, or solve with fewer planes.");
     return [`${what.join(" ")} The 95 % figures of every plane may be far off.`, todo.join(" ")];
   },
-  mass_limit_active: (w) => [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set.`, "The vibration left will be larger than without the limit; raise the limit if the plane can take more."],
+  mass_limit_active: (w) => /the same as without the bound/.test(w.message || "")
+    ? [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set, but a plane with the same effect on the sensors takes the rest.`, "The vibration left is the same as without the limit; nothing to do."]
+    : [`A correction${w.plane ? ` in plane ${w.plane}` : ""} reached the mass limit you set.`, "The vibration left will be larger than without the limit; raise the limit if the plane can take more."],
   mixed_units: () => ["The sensors use different units, so the sum over them mixes units.", "Leave out the sensors of one unit, or accept that the larger numbers count more."],
   plane_undetermined: (w) => [`The readings cannot tell what plane ${w.plane || ""} needs: its trial weight changed nothing that the sensors see on their own.`, `Repeat the trial in plane ${w.plane || "that plane"} with a heavier weight or at a larger radius, add a sensor that sees it, or leave the plane out.`],
   uncertainty_approximate: () => ["With this objective or a mass limit that is reached, the 95 % figures are an estimate.", "Read them as the scatter to expect, not as exact bounds."],

@@ -9,8 +9,10 @@
 //! convention (`conventions`), every amplitude with its unit (`units`);
 //! coefficients pooled from jobs that disagree say so (`pooled`); a run
 //! typed while the service is away is kept and stored later (`unreachable`);
-//! readings with repeated samples say so in the grid (`samples`).
+//! readings with repeated samples say so in the grid (`samples`); a mass
+//! limit that a twin plane makes up for is not called costly (`bound`).
 
+mod bound;
 mod conventions;
 mod critical;
 mod damping;
@@ -54,5 +56,7 @@ async fn the_form_says_what_the_service_means() {
     unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;
     stand.renew().await;
     samples::readings_with_samples_say_so_in_the_grid(&stand).await;
+    stand.renew().await;
+    bound::a_limit_a_twin_plane_makes_up_for_is_not_called_costly(&stand).await;
     stand.stop().await;
 }

@@ -61,9 +61,7 @@ pub(super) fn polish(
 ) -> Option<Vec<Complex64>> {
     let n = a.ncols();
     let prog = Real::new(a, b);
-    let x0: Vec<f64> = (0..2 * n)
-        .map(|i| if i < n { y0[i].re } else { y0[i - n].im })
-        .collect();
+    let x0 = stacked(y0);
     let r0 = prog.residuals(&x0);
     let t0 = peak(&r0);
     if !(t0.is_finite() && t0 > 0.0) {
@@ -194,9 +192,7 @@ pub(super) fn polish_least_squares(
 ) -> Option<Vec<Complex64>> {
     let n = a.ncols();
     let prog = Real::new(a, b);
-    let x0: Vec<f64> = (0..2 * n)
-        .map(|i| if i < n { y0[i].re } else { y0[i - n].im })
-        .collect();
+    let x0 = stacked(y0);
     let norm = |x: &[f64]| prog.residuals(x).iter().map(|v| v * v).sum::<f64>().sqrt();
     let t0 = norm(&x0);
     if !t0.is_finite() {
@@ -530,6 +526,14 @@ impl Real {
         // Not converged: no certificate from this guess.
         None
     }
+}
+
+/// `y` as the real unknowns `[Re y; Im y]` of the polishing programs.
+fn stacked(y: &[Complex64]) -> Vec<f64> {
+    y.iter()
+        .map(|v| v.re)
+        .chain(y.iter().map(|v| v.im))
+        .collect()
 }
 
 #[cfg(test)]

@@ -198,6 +198,21 @@ fn answer(req: &RotorRequest) -> serde_json::Value {
     serde_json::to_value(identify(req).unwrap()).unwrap()
 }
 
+/// The service's answer for `rotor` read at `n` speeds from `lo` to `hi` rpm
+/// with relative reading noise `noise` (seeded).
+fn noisy(
+    rotor: Jeffcott,
+    (lo, hi, n): (f64, f64, usize),
+    noise: f64,
+    seed: u64,
+    options: RotorOptions,
+) -> serde_json::Value {
+    answer(&RotorRequest {
+        session: session(&[rotor], &speeds(lo, hi, n), Unit::UmPp, noise, seed),
+        options,
+    })
+}
+
 fn num(v: &serde_json::Value, key: &str) -> f64 {
     v[key]
         .as_f64()
@@ -270,17 +285,13 @@ fn noisy_undamped_readings_give_the_mode_with_its_damping_unresolved() {
         ..Jeffcott::with(150.0, 2450.0, 0.0)
     };
     for seed in 1..=8 {
-        let s = session(
-            &[rotor],
-            &speeds(1200.0, 3600.0, 25),
-            Unit::UmPp,
+        let out = noisy(
+            rotor,
+            (1200.0, 3600.0, 25),
             0.02,
             seed,
+            RotorOptions::default(),
         );
-        let out = answer(&RotorRequest {
-            session: s,
-            options: RotorOptions::default(),
-        });
         let r = &out["results"][0];
         assert!(r.is_object(), "seed {seed}: {out}");
         assert!(
@@ -307,17 +318,7 @@ fn noisy_undamped_readings_give_the_mode_with_its_damping_unresolved() {
 fn a_real_damping_is_resolved_and_within_its_resolution_of_the_truth() {
     let check = |zeta_true: f64, noise: f64, seed: u64, options: &RotorOptions| {
         let rotor = Jeffcott::with(150.0, 2450.0, zeta_true);
-        let s = session(
-            &[rotor],
-            &speeds(1200.0, 3600.0, 25),
-            Unit::UmPp,
-            noise,
-            seed,
-        );
-        let out = answer(&RotorRequest {
-            session: s,
-            options: options.clone(),
-        });
+        let out = noisy(rotor, (1200.0, 3600.0, 25), noise, seed, options.clone());
         let r = &out["results"][0];
         assert!(r.get("damping_ratio_bound").is_none(), "{out}");
         // No warning but, with the cross-coupling estimated, that the damping
@@ -377,17 +378,7 @@ fn an_unresolved_damping_gives_no_damping_coefficient_and_never_a_negative_one()
                     ..Default::default()
                 },
             ] {
-                let s = session(
-                    &[rotor],
-                    &speeds(1200.0, 3600.0, 25),
-                    Unit::UmPp,
-                    noise,
-                    seed,
-                );
-                let out = answer(&RotorRequest {
-                    session: s,
-                    options: options.clone(),
-                });
+                let out = noisy(rotor, (1200.0, 3600.0, 25), noise, seed, options.clone());
                 let r = &out["results"][0];
                 assert_eq!(r["damping_ratio_bound"], "upper", "seed {seed}: {out}");
                 // The old answer: 14 negative coefficients over these 27 fits.
@@ -486,17 +477,13 @@ fn the_split_of_damping_and_cross_coupling_is_given_with_its_resolution_or_not_a
     let b_over_m = rotor.damping / rotor.mass_kg;
     let (mut given, mut missed, mut withheld) = (0, 0, 0);
     for seed in 1..=40 {
-        let s = session(
-            &[rotor],
-            &speeds(1200.0, 3600.0, 25),
-            Unit::UmPp,
+        let out = noisy(
+            rotor,
+            (1200.0, 3600.0, 25),
             0.02,
             seed,
+            RotorOptions::default(),
         );
-        let out = answer(&RotorRequest {
-            session: s,
-            options: RotorOptions::default(),
-        });
         let r = &out["results"][0];
         assert!(r.get("damping_ratio_bound").is_none(), "seed {seed}: {out}");
         match r.get("b_over_m") {
@@ -532,20 +519,16 @@ fn the_split_of_damping_and_cross_coupling_is_given_with_its_resolution_or_not_a
     // With the cross-coupling taken as zero, the damping coefficient is as
     // well resolved as the damping ratio: given every time, and right.
     for seed in 1..=8 {
-        let s = session(
-            &[rotor],
-            &speeds(1200.0, 3600.0, 25),
-            Unit::UmPp,
+        let out = noisy(
+            rotor,
+            (1200.0, 3600.0, 25),
             0.02,
             seed,
-        );
-        let out = answer(&RotorRequest {
-            session: s,
-            options: RotorOptions {
+            RotorOptions {
                 cross_coupling: Some(fieldbal::identification::rotor::CrossCoupling::Zero),
                 ..Default::default()
             },
-        });
+        );
         let r = &out["results"][0];
         let (b, rb) = (num(r, "b_over_m"), num(r, "b_over_m_resolution"));
         assert!(

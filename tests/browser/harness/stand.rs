@@ -85,6 +85,22 @@ pub async fn get(stand: &Stand, path: &str) -> Value {
 }
 
 /// The id of the first session the service lists (the one a test stored).
+/// Open the stored job `id` at its solve step in a fresh page and wait until
+/// it can be solved.
+pub async fn open_at_solve(stand: &Stand, id: &str) {
+    stand
+        .browser
+        .open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
+        .await;
+    stand
+        .browser
+        .wait_until(
+            "the job is open",
+            "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
+        )
+        .await;
+}
+
 pub async fn stored_session_id(stand: &Stand) -> String {
     let list = get(stand, "/api/v1/sessions").await;
     list["sessions"][0]["id"]

@@ -6,7 +6,7 @@
 use serde_json::json;
 
 use crate::harness::form::{field, type_into};
-use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::stand::{example_session, open_at_solve, post, Stand};
 
 pub async fn a_limit_a_twin_plane_makes_up_for_is_not_called_costly(stand: &Stand) {
     let b = &stand.browser;
@@ -30,13 +30,7 @@ pub async fn a_limit_a_twin_plane_makes_up_for_is_not_called_costly(stand: &Stan
     let limit = format!("{:.1}", total / 4.0);
     let created = post(stand, "/api/v1/sessions", session).await;
     let id = created["id"].as_str().expect("stored").to_string();
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, &id).await;
     b.click("#step-solve details.options summary").await;
     type_into(b, &field("options.max_mass_g.inboard"), &limit).await;
     b.click("#step-solve button.solve").await;

@@ -11,7 +11,7 @@
 use serde_json::{json, Value};
 
 use crate::harness::job::predicted;
-use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::stand::{example_session, open_at_solve, post, Stand};
 use crate::harness::steps::{js, named};
 
 /// Header cells under `css` that speak of an angle or a phase but say no convention.
@@ -57,13 +57,7 @@ pub async fn every_angle_of_the_answer_and_report_says_its_convention(stand: &St
     let session = with_a_check_run(stand, session).await;
     let created = post(stand, "/api/v1/sessions", session.clone()).await;
     let id = created["id"].as_str().expect("stored").to_string();
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, &id).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .trim li").await;
     let trim = b.text("#step-solve .trim h3").await;

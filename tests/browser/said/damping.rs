@@ -9,7 +9,7 @@
 use fieldbal::balancing::model::Unit;
 use serde_json::Value;
 
-use crate::harness::stand::{post, Stand};
+use crate::harness::stand::{open_at_solve, post, Stand};
 use crate::harness::steps::js;
 
 use super::jeffcott;
@@ -43,13 +43,7 @@ pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
 
     let created = post(stand, "/api/v1/sessions", session.clone()).await;
     let id = created["id"].as_str().expect("stored");
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, id).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .identification td.critical").await;
     let row: Value = js(

@@ -8,7 +8,7 @@
 use serde_json::json;
 
 use super::conventions::with_a_check_run;
-use crate::harness::stand::{example_session, post, Stand};
+use crate::harness::stand::{example_session, open_at_solve, post, Stand};
 use crate::harness::steps::js_async;
 
 pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
@@ -21,13 +21,7 @@ pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
     let session = with_a_check_run(stand, session).await;
     let created = post(stand, "/api/v1/sessions", session).await;
     let id = created["id"].as_str().expect("stored").to_string();
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, &id).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .run-check p").await;
     let check = b.text("#step-solve .run-check p").await;

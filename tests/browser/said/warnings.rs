@@ -11,7 +11,7 @@
 use serde_json::{json, Value};
 
 use crate::harness::form::{field, type_into};
-use crate::harness::stand::{example_session, get, post, Stand};
+use crate::harness::stand::{example_session, get, open_at_solve, post, Stand};
 use crate::harness::steps::{js, js_async};
 
 pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stand: &Stand) {
@@ -49,13 +49,7 @@ pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stan
     let limit = format!("{:.1}", mass / 2.0);
     let created = post(stand, "/api/v1/sessions", session).await;
     let id = created["id"].as_str().expect("stored").to_string();
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, &id).await;
     b.click("#step-solve details.options summary").await;
     type_into(b, &field(&format!("options.max_mass_g.{heavy}")), &limit).await;
     b.click("#step-solve button.solve").await;

@@ -6,7 +6,7 @@ use serde_json::{json, Value};
 
 use crate::harness::form::choose;
 use crate::harness::job::{predicted, shots};
-use crate::harness::stand::{post, Stand};
+use crate::harness::stand::{open_at_solve, post, Stand};
 use crate::harness::steps::js;
 use crate::harness::Browser;
 
@@ -85,13 +85,7 @@ pub async fn a_check_run_is_drawn_on_each_bode_plot(stand: &Stand, id: &str, ses
         "{}",
         stored.text().await.unwrap()
     );
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=solve")))
-        .await;
-    b.wait_until(
-        "the job with its check run is open",
-        "return !document.querySelector('#step-solve').hidden && !!document.querySelector('#step-solve button.solve')",
-    )
-    .await;
+    open_at_solve(stand, id).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve svg.bode").await;
     let got = js(

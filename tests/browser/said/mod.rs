@@ -10,7 +10,8 @@
 //! coefficients pooled from jobs that disagree say so (`pooled`); a run
 //! typed while the service is away is kept and stored later (`unreachable`);
 //! readings with repeated samples say so in the grid (`samples`); a mass
-//! limit that a twin plane makes up for is not called costly (`bound`).
+//! limit that a twin plane makes up for is not called costly (`bound`); a
+//! store whose answer was lost is not taken for another tab's (`retry`).
 
 mod bound;
 mod conventions;
@@ -18,6 +19,7 @@ mod critical;
 mod damping;
 mod dates;
 mod pooled;
+mod retry;
 mod samples;
 mod trim;
 mod units;
@@ -58,5 +60,7 @@ async fn the_form_says_what_the_service_means() {
     samples::readings_with_samples_say_so_in_the_grid(&stand).await;
     stand.renew().await;
     bound::a_limit_a_twin_plane_makes_up_for_is_not_called_costly(&stand).await;
+    stand.renew().await;
+    retry::a_store_that_half_succeeded_is_not_taken_for_another_tab(&stand).await;
     stand.stop().await;
 }

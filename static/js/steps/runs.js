@@ -6,7 +6,8 @@
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, textInput, selectInput, validateAll, clearMarks, markServerError, banner, mark, keepFocus } from "../page/fields.js";
 import { fmt, fmtReading, unitLabel, DECIMAL_RULE } from "../page/num.js";
-import { api, ApiError } from "../job/api.js";
+import { api, ApiError, unwrapSession } from "../job/api.js";
+import { keepNow } from "../job/keep.js";
 import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes, trimWords } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
@@ -158,6 +159,44 @@ async function reloadStored(root, rerender) {
   }
 }
 
+/** One spelling of a value, its keys sorted: equal spellings are the same value. */
+function spelling(value) {
+  if (Array.isArray(value)) return `[${value.map(spelling).join(",")}]`;
+  if (value && typeof value === "object") return `{${Object.keys(value).sort().map((k) => `${JSON.stringify(k)}:${spelling(value[k])}`).join(",")}}`;
+  return JSON.stringify(value);
+}
+
+/** A run as the service keeps it, spelled one way: two runs are the same when these are equal. */
+const runKey = (run) => spelling(runJson(run));
+
+/** Whether two lists of runs are the same runs, in the same order. */
+function sameRuns(a, b) {
+  return a.length === b.length && a.every((r, i) => runKey(r) === runKey(b[i]));
+}
+
+/**
+ * Whether the run sent by a Store whose answer was lost (`sent`) is stored
+ * as sent, and nothing else changed since this page read the session: the
+ * service took the write, then the answer (or the read after it) was lost.
+ */
+function sentRunLanded(storedRuns, sent) {
+  const others = (runs) => runs.filter((r) => r.id !== sent.id);
+  const known = state.runs.filter((r) => r.stored);
+  return storedRuns.some((r) => runKey(r) === runKey(sent)) && sameRuns(others(storedRuns), others(known));
+}
+
+/** The run is stored: the draft goes, and the page goes on to what comes next. */
+function stored(root, words) {
+  state.draft = null;
+  state.solution = null;
+  changed();
+  if (words) banner(root, "ok", words);
+  // On to what comes next (the focus was left on the page's body, and Tab
+  // started again from the top): another trial while a plane is untried,
+  // else Solve.
+  ($("button.go-solve:not(:disabled)", root) || $("button.add-trial", root))?.focus();
+}
+
 async function store(root, rerender) {
   const d = state.draft;
   clearMarks(root);
@@ -166,51 +205,86 @@ async function store(root, rerender) {
   const run = draftRun();
   const k = draftPosition();
   if (!d.zero && run.weights.length === 0) return banner(root, "error", "A trial run needs at least one weight. Add the trial weight, or tick that the earlier trial weights are still on.");
-  if (state.runs.some((r, i) => r.id === run.id && i !== d.index)) {
+  // The run a Store whose answer was lost sent may be stored under this name
+  // (the page reloaded since): that is this run, looked at below, not a clash.
+  const mine = (r) => d.sent && state.id !== null && runKey(r) === runKey(d.sent);
+  if (state.runs.some((r, i) => r.id === run.id && i !== d.index && !mine(r))) {
     return mark($(`[data-field="runs[${k}].id"]`, root), "another run already has this name");
   }
   const question = retrialQuestion(run, d);
   if (question) {
     return ask(root, question, () => { d.confirmedRetrial = true; store(root, rerender); }, () => $(`[data-field="runs[${k}].weights[0].plane"]`, root)?.focus());
   }
+  // Whether the service has taken the run: a failure after it (reading the
+  // session's tag back) did not leave the run unstored.
+  let written = false;
   try {
     if (state.id === null) {
       const session = { ...setupJson(), runs: [run] };
+      d.sent = runJson(run);
       const created = await api.createSession(session);
+      written = true;
       state.id = created.id;
       history.replaceState({ step: "runs" }, "", `#session=${encodeURIComponent(created.id)}&step=runs`);
       state.runs = [{ ...runJson(run), stored: true }];
     } else {
       // Two tabs on one session: anything stored elsewhere since this page read it stops the write.
       const now = await api.getSessionTagged(state.id);
-      if (state.etag && now.etag && now.etag !== state.etag) return conflict(root, rerender);
+      const storedRuns = (unwrapSession(now.data) || {}).runs || [];
+      if (d.sent && sentRunLanded(storedRuns, d.sent)) {
+        // The last Store reached the service and only its answer was lost:
+        // the run is there as sent, stored once. It is not another tab's.
+        state.runs = storedRuns.map((r) => ({ ...runJson(r), stored: true }));
+        state.etag = now.etag;
+        if (runKey(run) === runKey(d.sent)) {
+          return stored(root, `The run “${run.id}” is stored: the service took it when Store was pressed before, and only its answer was lost. It is stored once.`);
+        }
+        // Changed since it was sent: what was typed since corrects it.
+        d.index = state.runs.findIndex((r) => r.id === d.sent.id);
+        d.etag = null;
+        d.sent = null;
+      } else if (now.etag !== state.etag) {
+        // A tag this page missed (its read after a store was lost) is no
+        // change made elsewhere when the stored runs are the ones it knows.
+        if (!sameRuns(storedRuns, state.runs.filter((r) => r.stored))) return conflict(root, rerender);
+        state.etag = now.etag;
+      }
+      d.sent = runJson(run);
       if (d.index === null) {
         await api.addRun(state.id, run);
+        written = true;
         state.runs.push({ ...runJson(run), stored: true });
       } else {
         await api.putRunIfMatch(state.id, state.runs[d.index].id, run, d.etag);
+        written = true;
         state.runs[d.index] = { ...runJson(run), stored: true };
       }
     }
     state.etag = (await api.getSessionTagged(state.id)).etag;
   } catch (err) {
+    if (written) {
+      // The run is stored; only the session's tag was not read back (the
+      // next Store reads it, and sees that nothing else changed).
+      return stored(root, `The run “${run.id}” was stored. The service stopped answering just after; start it again (the command fieldbal serve) before the next run if it is away.`);
+    }
+    const uncertain = !!d.sent;
+    if (!(err instanceof ApiError && err.code === "network")) d.sent = null;
     if (err instanceof ApiError && err.status === 412) return conflict(root, rerender);
     // Say what became of the run, not only that the service is away.
     if (err instanceof ApiError && err.code === "network") {
-      return banner(root, "error", "The fieldbal service does not answer, so the run was not stored. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again.");
+      keepNow();
+      if (!uncertain) return banner(root, "error", "The fieldbal service does not answer, so the run was not stored. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again.");
+      if (state.id === null) {
+        return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the job was stored with its zero run: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then look in Sessions; if the job is listed there open it, else press Store again.");
+      }
+      return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the run was stored: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again; the form looks at what is stored first, and stores the run only if it is not there.");
     }
     const prefix = state.id === null ? "" : `runs[${k}].`;
     if (!markServerError(err, prefix)) banner(root, "error", err.message);
     else banner(root, "error", "The service did not accept the run; the field is marked.");
     return;
   }
-  state.draft = null;
-  state.solution = null;
-  changed();
-  // On to what comes next (the focus was left on the page's body, and Tab
-  // started again from the top): another trial while a plane is untried,
-  // else Solve.
-  ($("button.go-solve:not(:disabled)", root) || $("button.add-trial", root))?.focus();
+  stored(root, "");
 }
 
 /**

@@ -3,8 +3,15 @@
 //! moment). The form said "the run was not stored" when it was, and Store
 //! pressed again said the session was "changed in another tab" (or that
 //! another run had the run's name): the technician could think someone else
-//! had edited the job. The retry now sees that the run it stores is there
-//! already, the same, and goes on; the run is stored once.
+//! had edited the job. Now a run the service took is said to be stored; a
+//! write whose answer was lost is said to be uncertain, and Store pressed
+//! again (also after a reload) sees the run stored as sent and goes on; each
+//! run is stored once.
+//!
+//! How the answer is lost in a real browser: the page's `fetch` is replaced,
+//! for one call, by one that lets the request reach the service and then
+//! fails as a lost connection does (a `TypeError`), or that fails the read
+//! after the write; it puts the real `fetch` back as it fails.
 
 use serde_json::{json, Value};
 
@@ -19,32 +26,82 @@ async fn type_trial(b: &Browser, session: &Value, k: usize) {
     let w = &run["weights"][0];
     b.click("#step-runs button.add-trial").await;
     let path = format!("runs[{k}].weights[0]");
-    choose(b, &field(&format!("{path}.plane")), w["plane"].as_str().unwrap()).await;
+    choose(
+        b,
+        &field(&format!("{path}.plane")),
+        w["plane"].as_str().unwrap(),
+    )
+    .await;
     type_into(b, &field(&format!("{path}.mass_g")), &typed(&w["mass_g"])).await;
-    type_into(b, &field(&format!("{path}.angle_deg")), &typed(&w["angle_deg"])).await;
-    type_into(b, &field(&format!("runs[{k}].id")), run["id"].as_str().unwrap()).await;
+    type_into(
+        b,
+        &field(&format!("{path}.angle_deg")),
+        &typed(&w["angle_deg"]),
+    )
+    .await;
+    type_into(
+        b,
+        &field(&format!("runs[{k}].id")),
+        run["id"].as_str().unwrap(),
+    )
+    .await;
     type_cells_with_tab(b, k, &cells(session, run)).await;
 }
 
-/// The stored session's run ids, in order.
-async fn stored_runs(stand: &Stand, id: &str) -> Vec<String> {
+/// The stored session's runs.
+async fn stored_runs(stand: &Stand, id: &str) -> Vec<Value> {
     let stored = get(stand, &format!("/api/v1/sessions/{id}")).await;
     let session = stored.get("session").cloned().unwrap_or(stored);
     session["runs"]
         .as_array()
         .unwrap_or_else(|| panic!("{session}"))
+        .clone()
+}
+
+/// The stored session's run ids, in order.
+async fn stored_ids(stand: &Stand, id: &str) -> Vec<String> {
+    stored_runs(stand, id)
+        .await
         .iter()
         .map(|r| r["id"].as_str().unwrap().to_string())
         .collect()
 }
 
-/// Press Store and wait until the run is stored (the draft gone) or a banner speaks.
-async fn press_store(b: &Browser) {
+/// Press Store and wait until the run is stored (the draft gone, the next
+/// run can be added) or an error banner speaks; the banner shown then.
+async fn press_store(b: &Browser) -> String {
     b.click("#step-runs button.store").await;
     b.wait_until(
-        "the run is stored or a banner speaks",
+        "the run is stored or an error speaks",
         "return !!document.querySelector('#step-runs button.add-trial') || \
-         !!document.querySelector('#step-runs .banner:not([hidden])')",
+         !!document.querySelector('#step-runs .banner.error:not([hidden])')",
+    )
+    .await;
+    js(
+        b,
+        "const e = document.querySelector('#step-runs .banner:not([hidden])'); return e ? e.className + ': ' + e.textContent : ''",
+    )
+    .await
+    .as_str()
+    .unwrap()
+    .to_string()
+}
+
+/// The page's `fetch` lets the next write (`method` to a path ending in
+/// `tail`) reach the service, then fails as a lost connection does.
+async fn lose_the_answer_of(b: &Browser, method: &str, tail: &str) {
+    js(
+        b,
+        &format!(
+            "const real = window.fetch; \
+             window.fetch = (url, init) => {{ \
+               const method = (init && init.method) || 'GET'; \
+               if (method === '{method}' && String(url).endsWith('{tail}')) {{ \
+                 window.fetch = real; \
+                 return real(url, init).then(() => {{ throw new TypeError('Failed to fetch'); }}); }} \
+               return real(url, init); \
+             }}; return true"
+        ),
     )
     .await;
 }
@@ -56,62 +113,84 @@ pub async fn a_store_that_half_succeeded_is_not_taken_for_another_tab(stand: &St
     first["runs"] = json!([session["runs"][0].clone()]);
     let created = post(stand, "/api/v1/sessions", first).await;
     let id = created["id"].as_str().expect("stored").to_string();
-    b.open_fresh(&stand.server.url(&format!("/#session={id}&step=runs")))
-        .await;
+    let url = stand.server.url(&format!("/#session={id}&step=runs"));
+    b.open_fresh(&url).await;
 
-    // The run is added, then the read of the session's tag after it fails.
+    // (a) The run is added, then the read of the session's tag after it fails.
     type_trial(b, &session, 1).await;
     js(
         b,
-        "window.realFetch = window.fetch; let added = false; \
+        "const real = window.fetch; let added = false; \
          window.fetch = (url, init) => { \
            const method = (init && init.method) || 'GET'; \
-           if (added && method === 'GET') { window.fetch = window.realFetch; return Promise.reject(new TypeError('Failed to fetch')); } \
-           return window.realFetch(url, init).then((r) => { if (method === 'POST' && String(url).endsWith('/runs')) added = true; return r; }); \
+           if (added && method === 'GET') { window.fetch = real; return Promise.reject(new TypeError('Failed to fetch')); } \
+           return real(url, init).then((r) => { if (method === 'POST' && String(url).endsWith('/runs')) added = true; return r; }); \
          }; return true",
     )
     .await;
-    press_store(b).await;
-    let said = b.text("#step-runs .banner:not([hidden])").await;
+    let said = press_store(b).await;
     assert!(
         said.contains("was stored") && !said.contains("not stored"),
         "the run was stored, and the page says so: {said}"
     );
-    assert_eq!(stored_runs(stand, &id).await, ["zero", "trial inboard"]);
-    assert!(
-        js(b, "return !!document.querySelector('#step-runs button.add-trial')").await == json!(true),
-        "the job goes on: the next run can be added"
-    );
+    assert_eq!(stored_ids(stand, &id).await, ["zero", "trial inboard"]);
 
-    // The next run reaches the service, but its answer is lost: Store again
-    // with the service back finds it there, the same, and goes on.
+    // (b) The next run reaches the service, but its answer is lost: the page
+    // cannot tell, and says so; Store again finds it stored, the same, and
+    // goes on (the tag missed in (a) is no other tab's change either).
     type_trial(b, &session, 2).await;
-    js(
-        b,
-        "window.fetch = (url, init) => { \
-           const method = (init && init.method) || 'GET'; \
-           if (method === 'POST' && String(url).endsWith('/runs')) { \
-             window.fetch = window.realFetch; \
-             return window.realFetch(url, init).then(() => { throw new TypeError('Failed to fetch'); }); } \
-           return window.realFetch(url, init); \
-         }; return true",
-    )
-    .await;
-    press_store(b).await;
-    let said = b.text("#step-runs .banner.error:not([hidden])").await;
-    assert!(said.contains("does not answer"), "{said}");
-    press_store(b).await;
-    let banner = js(
-        b,
-        "const e = document.querySelector('#step-runs .banner.error:not([hidden])'); return e ? e.textContent : ''",
-    )
-    .await;
-    assert_eq!(banner, json!(""), "no other tab changed the session");
-    b.wait_for("#step-runs button.go-solve:not(:disabled)").await;
+    lose_the_answer_of(b, "POST", "/runs").await;
+    let said = press_store(b).await;
+    assert!(
+        said.contains("error") && said.contains("does not answer"),
+        "{said}"
+    );
+    assert!(
+        said.contains("cannot tell whether the run was stored") && !said.contains("not stored"),
+        "the service may have taken it: {said}"
+    );
+    let said = press_store(b).await;
+    assert!(
+        !said.contains("error") && !said.contains("another tab"),
+        "no other tab changed the session: {said}"
+    );
+    assert!(said.contains("stored once"), "{said}");
+    b.wait_for("#step-runs button.go-solve:not(:disabled)")
+        .await;
     assert_eq!(
-        stored_runs(stand, &id).await,
+        stored_ids(stand, &id).await,
         ["zero", "trial inboard", "trial outboard"],
         "each run stored once"
+    );
+
+    // (c) A correction reaches the service, its answer is lost, and the page
+    // is reloaded before Store is pressed again: the corrected run comes
+    // back, and Store sees it stored as sent (one new version, no conflict).
+    b.click("#step-runs th.run[data-run=\"trial outboard\"] button.correct")
+        .await;
+    type_into(b, &field("runs[2].readings[0].amplitude"), "742").await;
+    lose_the_answer_of(b, "PUT", "/runs/trial%20outboard").await;
+    let said = press_store(b).await;
+    assert!(said.contains("cannot tell whether"), "{said}");
+    b.open_fresh(&url).await;
+    b.wait_for(&field("runs[2].readings[0].amplitude")).await;
+    let said = press_store(b).await;
+    assert!(
+        !said.contains("error") && said.contains("stored once"),
+        "{said}"
+    );
+    let runs = stored_runs(stand, &id).await;
+    assert_eq!(runs[2]["readings"][0]["amplitude"], json!(742.0));
+    let versions = get(
+        stand,
+        &format!("/api/v1/sessions/{id}/runs/trial%20outboard/versions"),
+    )
+    .await;
+    let versions = versions.get("versions").cloned().unwrap_or(versions);
+    assert_eq!(
+        versions.as_array().map(Vec::len),
+        Some(2),
+        "the run as typed and its correction, once: {versions}"
     );
 }
 

@@ -64,15 +64,32 @@ function rowsUnit(rows) {
   return u ? ` ${u}` : "";
 }
 
-/** Each check run (any run the others predict) beside its prediction. */
+/**
+ * What a run check's prediction comes from: the other runs of the job, or,
+ * in a trim job, the coefficients it is solved with (the service checks each
+ * run against those then, and no run against the others).
+ */
+function predictedFrom(sol) {
+  const from = sol.coefficients_from;
+  if (from) return { what: `the stored coefficients of machine ${from.machine} (version ${from.version ?? "latest"})`, given: true, verb: "predict" };
+  const trim = state.setup.trim;
+  const n = trim && Array.isArray(trim.influence_coefficients) ? trim.influence_coefficients.length : 0;
+  if (n) return { what: `the ${n} supplied influence coefficient${n === 1 ? "" : "s"}`, given: true, verb: n === 1 ? "predicts" : "predict" };
+  return { what: "the other runs", given: false, verb: "predict" };
+}
+
+/** Each check run (any run the others, or a trim job's coefficients, predict) beside its prediction. */
 export function runChecks(sol) {
   if (!sol.run_checks || !sol.run_checks.length) return "";
+  const from = predictedFrom(sol);
+  const scatter = from.given ? "the scatter of the readings and of the coefficients" : "the readings' scatter";
+  const then = from.given ? "Check its weights and readings; else the rotor or its mounting may have changed since the coefficients were measured." : "Check its weights and readings.";
   return h("div", { class: "run-checks" },
     h("h3", {}, "Runs beside their predictions"),
     sol.run_checks.map((c) => h("div", { class: `run-check ${c.consistent ? "agrees" : "differs"}`, dataset: { run: c.run } },
       h("p", {}, h("strong", {}, `Run “${c.run}”: `), c.consistent
-        ? `agrees with what the other runs predict for its weights (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted).`
-        : `differs from what the other runs predict for its weights by more than the readings' scatter explains (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted). Check its weights and readings.`),
+        ? `agrees with what ${from.what} ${from.verb} for its weights (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted).`
+        : `differs from what ${from.what} ${from.verb} for its weights by more than ${scatter} explains (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted). ${then}`),
       h("div", { class: "scroll" }, h("table", { class: "check-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, `Measured, at phase ${phaseWords(sol)}`), h("th", {}, `Predicted, at phase ${phaseWords(sol)}`), h("th", {}, "95 % bound"), h("th", {}, "Unit"))),
         h("tbody", {}, c.rows.map(checkRow)))),

@@ -2,12 +2,15 @@
 //! runs, and its set-up step did not say so: it looked like any new job
 //! until the runs step. It now says it is a trim job and whose coefficients
 //! it is solved with: a machine's stored ones (which version), or supplied.
+//! Its run checks say what they predict from: those coefficients, not "the
+//! other runs".
 
 use serde_json::json;
 
 use crate::harness::form::field;
+use super::conventions::with_a_check_run;
 use crate::harness::stand::machine_with_coefficients;
-use crate::harness::stand::{example_session, get, post, Stand};
+use crate::harness::stand::{example_session, get, open_at_solve, post, Stand};
 use crate::reopened::reopen_elsewhere;
 
 /// The trim job begun on the machine page: the set-up names the machine and
@@ -65,3 +68,60 @@ pub async fn a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(stand: 
         "Trim job: solved with the 8 supplied influence coefficients, instead of trial runs: a zero run is all it needs."
     );
 }
+
+/// A trim job with a check run, stored with `trim` (the machine's stored
+/// coefficients, or supplied ones), solved in the form: the run's check.
+async fn trim_check_words(stand: &Stand, name: &str, trim: serde_json::Value) -> String {
+    let b = &stand.browser;
+    let (pump, _) = example_session("pump-two-plane-exact.json");
+    let checked = with_a_check_run(stand, pump).await;
+    let mut session = checked.clone();
+    let runs = checked["runs"].as_array().unwrap();
+    session["name"] = json!(name);
+    session["machine"] = json!("PUMP-1");
+    session["runs"] = json!([runs[0].clone(), runs[runs.len() - 1].clone()]);
+    session["trim"] = trim;
+    let created = post(stand, "/api/v1/sessions", session).await;
+    let id = created["id"].as_str().expect("stored").to_string();
+    open_at_solve(stand, &id).await;
+    b.click("#step-solve button.solve").await;
+    b.text("#step-solve .run-check[data-run=\"check 1\"] p")
+        .await
+}
+
+/// A trim job checks its runs against the coefficients it is solved with,
+/// not against its other runs (it has none to predict from): the run-check
+/// words said "what the other runs predict" in a trim job.
+pub async fn a_trim_jobs_run_check_names_its_coefficients(stand: &Stand) {
+    machine_with_coefficients(stand).await;
+    let said = trim_check_words(
+        stand,
+        "stored trim",
+        json!({ "coefficients_from": { "machine": "PUMP-1" } }),
+    )
+    .await;
+    assert!(
+        said.contains("what the stored coefficients of machine PUMP-1 (version")
+            && said.contains("predict for its weights"),
+        "{said}"
+    );
+    assert!(!said.contains("other runs"), "{said}");
+
+    let known = get(stand, "/api/v1/machines/PUMP-1/coefficients").await;
+    let supplied = known["influence_coefficients"].clone();
+    let n = supplied.as_array().expect("coefficients").len();
+    let said = trim_check_words(
+        stand,
+        "supplied trim",
+        json!({ "influence_coefficients": supplied }),
+    )
+    .await;
+    assert!(
+        said.contains(&format!(
+            "what the {n} supplied influence coefficients predict for its weights"
+        )),
+        "{said}"
+    );
+    assert!(!said.contains("other runs"), "{said}");
+}
+

@@ -6,7 +6,7 @@
 import { h, s, replace, $ } from "../page/dom.js";
 import { banner, textInput, numberInput, selectInput, markServerError, clearMarks } from "../page/fields.js";
 import { checkRotor, GRADE_CHOICES } from "./setup.js";
-import { fmt, storedAt } from "../page/num.js";
+import { fmt, storedAt, unitLabel } from "../page/num.js";
 import { pagedList } from "../page/paged.js";
 import { api, unwrapSession } from "../job/api.js";
 import { state, setupOf, emptySetup } from "../job/state.js";
@@ -30,8 +30,15 @@ export function jobDates(stamps) {
   return at.map((t, i) => [t.slice(0, 10), shared(i, 10) ? t.slice(11, shared(i, 16) ? 19 : 16) : ""]);
 }
 
+/** ", µm pk-pk" when every job on the trend reads in that one unit, else "". */
+function trendUnit(jobs, units) {
+  const all = new Set(jobs.map((j) => units.get(j.id)));
+  const [one] = [...all];
+  return all.size === 1 && one && one !== "mixed units" ? `, ${one}` : "";
+}
+
 /** Before and after per job, oldest first, as two lines over the jobs' dates. */
-function trend(sessions) {
+function trend(sessions, units) {
   const jobs = sessions.filter((x) => x.summary).sort((a, b) => String(a.created_at).localeCompare(String(b.created_at)));
   if (jobs.length === 0) return h("p", { class: "hint" }, "No solved job yet: the trend starts with the first.");
   const W = 360;
@@ -47,7 +54,7 @@ function trend(sessions) {
   const shown = new Set(jobs.length <= 5 ? jobs.keys() : [0, 1, 2, 3, 4].map((k) => Math.round((k * (jobs.length - 1)) / 4)));
   const dates = jobDates(jobs.map((j) => j.created_at));
   return h("figure", { class: "trend-fig" },
-    h("figcaption", {}, "RMS vibration per job: before (blue) and predicted after (green)"),
+    h("figcaption", {}, `RMS vibration per job${trendUnit(jobs, units)}: before (blue) and predicted after (green)`),
     s("svg", { viewBox: `0 0 ${W} ${H}`, class: "trend", role: "img", "aria-label": "Vibration per job over time" },
       s("line", { x1: 25, x2: W - 10, y1: y(0), y2: y(0), class: "grid" }),
       s("text", { x: 2, y: y(top) + 4, class: "tick" }, fmt(top, 0)),
@@ -103,6 +110,24 @@ function poolWarnings(latest, sessions) {
     })));
 }
 
+/**
+ * The unit of each solved job's vibration (its sensors' one unit, "mixed
+ * units" when they differ, "" when the session cannot be read): the machine's
+ * jobs come without their sensors, and the before/after figures were bare
+ * numbers beside every other amplitude of the form with its unit.
+ */
+async function jobUnits(sessions) {
+  const unitOf = async (x) => {
+    try {
+      const units = new Set((unwrapSession(await api.getSession(x.id)).sensors || []).map((sensor) => sensor.unit));
+      return [x.id, units.size === 1 ? unitLabel([...units][0]) : units.size > 1 ? "mixed units" : ""];
+    } catch (err) {
+      return [x.id, ""];
+    }
+  };
+  return new Map(await Promise.all(sessions.filter((x) => x.summary).map(unitOf)));
+}
+
 async function machinePage(root, id, go) {
   replace(root, h("h2", {}, `Machine ${id}`), h("p", {}, "Loading…"));
   let m;
@@ -116,6 +141,8 @@ async function machinePage(root, id, go) {
   const solved = sessions.filter((x) => x.summary).map((x) => x.id);
   // The latest version's warnings; the page is whole without them.
   const latest = coefficients.length ? await api.getCoefficients(id).catch(() => null) : null;
+  const units = await jobUnits(sessions);
+  const inUnit = (x, a, b) => `${fmt(a, 1)}, ${fmt(b, 1)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
   replace(root,
     h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),
     m.rotor ? h("p", {}, `Rotor: ${fmt(m.rotor.mass_kg, 0)} kg, service speed ${fmt(m.rotor.service_speed_rpm, 0)} rpm${m.rotor.balance_grade ? `, balance grade ${m.rotor.balance_grade}` : ""}.`) : "",
@@ -131,13 +158,13 @@ async function machinePage(root, id, go) {
         }
       } }, "Store coefficients from the solved jobs")),
     h("h3", {}, "Jobs over time"),
-    trend(sessions),
+    trend(sessions, units),
     h("div", { class: "scroll" }, h("table", { class: "sessions machine-jobs" },
       h("thead", {}, h("tr", {}, h("th", {}, "Job"), h("th", {}, "Stored"), h("th", {}, "Runs"), h("th", {}, "Vibration before: RMS, largest"), h("th", {}, "After (predicted): RMS, largest"))),
       h("tbody", {}, sessions.length === 0 ? h("tr", {}, h("td", { colspan: 5 }, "No jobs for this machine yet.")) : sessions.map((x) => h("tr", {},
         h("td", {}, h("button", { type: "button", class: "link open-session", onclick: () => go.openSession(x.id) }, x.name || x.id)),
         h("td", {}, storedAt(x.created_at)), h("td", {}, String(x.runs ?? "")),
-        x.summary ? [h("td", { class: "before" }, `${fmt(x.summary.rms_before, 1)}, ${fmt(x.summary.max_before, 1)}`), h("td", { class: "after" }, `${fmt(x.summary.rms_after, 1)}, ${fmt(x.summary.max_after, 1)}`)]
+        x.summary ? [h("td", { class: "before" }, inUnit(x, x.summary.rms_before, x.summary.max_before)), h("td", { class: "after" }, inUnit(x, x.summary.rms_after, x.summary.max_after))]
           : h("td", { colspan: 2 }, "not solved")))))),
     h("h3", {}, "Coefficient versions"),
     coefficients.length === 0 ? h("p", { class: "hint" }, "None stored yet. Solve a job with trial runs, then store the coefficients from it: later jobs can trim with only a reference run.")

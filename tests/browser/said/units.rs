@@ -3,13 +3,14 @@
 //! 39.8 predicted" and the kit fit "RMS 3.21, largest 5.02 predicted after",
 //! in the answer and in the report, without the unit the residual table
 //! beside them gives. The results CSV had no unit for its amplitudes and
-//! no convention for its phases.
+//! no convention for its phases. The machine page's jobs gave their
+//! vibration before and after as bare numbers.
 
 use serde_json::json;
 
 use super::conventions::with_a_check_run;
-use crate::harness::stand::{example_session, open_at_solve, post, Stand};
-use crate::harness::steps::js_async;
+use crate::harness::stand::{example_session, machine_with_coefficients, open_at_solve, post, Stand};
+use crate::harness::steps::{js, js_async};
 
 pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
     let b = &stand.browser;
@@ -65,4 +66,42 @@ pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
         assert_eq!(row.len(), header.len(), "{row:?}");
         assert_eq!(row[unit], "\"um_pp\"", "{row:?}");
     }
+}
+
+/// The machine page's jobs say their vibration's unit, each its own (the
+/// before and after figures were bare numbers); the trend names the unit
+/// only when every job on it reads in one.
+pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
+    let b = &stand.browser;
+    let mut other = machine_with_coefficients(stand).await;
+    other["name"] = json!("in mils");
+    for sensor in other["sensors"].as_array_mut().unwrap() {
+        sensor["unit"] = json!("mils_pp");
+    }
+    let created = post(stand, "/api/v1/sessions", other).await;
+    let id = created["id"].as_str().expect("stored");
+    post(stand, &format!("/api/v1/sessions/{id}/solutions"), json!({})).await;
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.wait_for("table.machine-jobs td.after").await;
+    let rows = js(
+        b,
+        "return [...document.querySelectorAll('table.machine-jobs tbody tr')].map((r) => \
+           [r.querySelector('button.open-session').textContent, r.querySelector('td.before').textContent, r.querySelector('td.after').textContent])",
+    )
+    .await;
+    let rows = rows.as_array().expect("rows");
+    assert_eq!(rows.len(), 2, "{rows:?}");
+    for row in rows {
+        let unit = if row[0] == "in mils" { "mils pk-pk" } else { "µm pk-pk" };
+        for cell in [&row[1], &row[2]] {
+            let cell = cell.as_str().unwrap();
+            assert!(cell.ends_with(&format!(" {unit}")), "{row:?}");
+        }
+    }
+    let caption = b.text("figure.trend-fig figcaption").await;
+    assert!(
+        caption.starts_with("RMS vibration per job:"),
+        "two units: none named for both: {caption}"
+    );
 }

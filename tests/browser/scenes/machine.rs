@@ -1,5 +1,6 @@
 //! The machine page after three jobs: each job's vibration before and after,
-//! and the trend of both.
+//! in its unit (the figures were bare numbers, beside every other amplitude
+//! of the form with its unit), and the trend of both.
 
 use serde_json::json;
 
@@ -28,7 +29,8 @@ pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &S
         .await;
         let pair = |a: &str, b: &str| {
             let f = |k: &str| fmt(sm[k].as_f64().unwrap(), 1);
-            format!("{}, {}", f(a), f(b))
+            // Every sensor of the pump's jobs reads µm pk-pk (um_pp).
+            format!("{}, {} µm pk-pk", f(a), f(b))
         };
         assert_eq!(
             row[0],
@@ -46,6 +48,11 @@ pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &S
         points,
         json!([2, 2 * jobs.len()]),
         "before and after, a point per job"
+    );
+    let caption = b.text("figure.trend-fig figcaption").await;
+    assert!(
+        caption.starts_with("RMS vibration per job, µm pk-pk:"),
+        "{caption}"
     );
     trend_is_labelled_with_the_jobs_dates(b, jobs).await;
     crate::harness::job::scroll_to(b, "h3").await;

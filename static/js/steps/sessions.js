@@ -46,27 +46,34 @@ export function readingsCsv() {
  * The solution as CSV: corrections (and their bias-corrected estimates),
  * the predicted residual per sensor and speed with its unit and the phases'
  * convention, and every warning in the service's words ("code: message", in
- * the last column, `note`). The unit, the phase convention and the warnings
+ * the column `note`). The unit, the phase convention and the warnings
  * were left out: an engineer reading the file alone could not tell µm from
- * mils, lag from lead, or that a trial was too small to trust.
+ * mils, lag from lead, or that a trial was too small to trust. After `note`,
+ * a trim's `from_run` (the run whose state the corrections add to, and whose
+ * readings are the residual's "before") and each correction's `total` (the
+ * one weight per plane that replaces every weight in it): a trim's file did
+ * not say that its weights were to be added to those on the rotor.
  */
 export function resultsCsv() {
   const sol = state.solution;
   const conventions = sol.conventions || state.setup.conventions;
-  const out = [["kind", "plane_or_sensor", "speed_rpm", "mass_g", `angle_deg (${conventions.angle_direction})`, "unbalance_gmm", "mass_95_lo", "mass_95_hi", "amplitude_before", "amplitude_after", "amplitude_95", `phase_deg (${conventions.phase})`, "unit", "note"]];
+  const from = sol.from_run ?? "";
+  const out = [["kind", "plane_or_sensor", "speed_rpm", "mass_g", `angle_deg (${conventions.angle_direction})`, "unbalance_gmm", "mass_95_lo", "mass_95_hi", "amplitude_before", "amplitude_after", "amplitude_95", `phase_deg (${conventions.phase})`, "unit", "note",
+    "from_run", "total_mass_g", `total_angle_deg (${conventions.angle_direction})`]];
   for (const c of sol.corrections) {
     const u = c.uncertainty;
-    out.push(["correction", c.plane, "", c.mass_g, c.angle_deg, c.unbalance_gmm ?? "", u ? u.mass_g[0] : "", u ? u.mass_g[1] : "", "", "", "", "", "", ""]);
+    const t = c.total;
+    out.push(["correction", c.plane, "", c.mass_g, c.angle_deg, c.unbalance_gmm ?? "", u ? u.mass_g[0] : "", u ? u.mass_g[1] : "", "", "", "", "", "", "", from, t ? t.mass_g : "", t ? t.angle_deg : ""]);
     // The errors-in-variables estimate C* beside it (method.md 8.11), when the
     // noise is stated or measured: a row of its own, in the same columns.
     const b = u && u.bias_corrected;
-    if (b) out.push(["bias_corrected", c.plane, "", b.mass_g, b.angle_deg, "", "", "", "", "", "", "", "", ""]);
+    if (b) out.push(["bias_corrected", c.plane, "", b.mass_g, b.angle_deg, "", "", "", "", "", "", "", "", "", from, "", ""]);
   }
   for (const r of sol.predicted_residual) {
-    out.push(["residual", r.sensor, r.speed_rpm, "", "", "", "", "", r.amplitude_before, r.amplitude, r.amplitude_95 ?? "", r.phase_deg, r.unit ?? "", ""]);
+    out.push(["residual", r.sensor, r.speed_rpm, "", "", "", "", "", r.amplitude_before, r.amplitude, r.amplitude_95 ?? "", r.phase_deg, r.unit ?? "", "", from, "", ""]);
   }
   for (const w of sol.warnings || []) {
-    out.push(["warning", w.plane ?? "", "", "", "", "", "", "", "", "", "", "", "", `${w.code}: ${w.message}`]);
+    out.push(["warning", w.plane ?? "", "", "", "", "", "", "", "", "", "", "", "", `${w.code}: ${w.message}`, "", "", ""]);
   }
   return csv(out);
 }

@@ -4,7 +4,9 @@
 //! (`critical`), a solution's date
 //! in the one format of every other stored time (`dates`), and a trim job's
 //! set-up says it is one and with which coefficients, and its run checks
-//! what they predict from (`trim`); every warning of a solve with the service's message, beside the plane it names
+//! what they predict from, its results CSV what run it adds to (`trim`);
+//! every warning
+//! of a solve with the service's message, beside the plane it names
 //! (`warnings`); every angle of the answer and the report with its
 //! convention (`conventions`), every amplitude with its unit (`units`);
 //! coefficients pooled from jobs that disagree say so (`pooled`); a run
@@ -48,6 +50,8 @@ async fn the_form_says_what_the_service_means() {
     trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
     stand.renew().await;
     trim::a_trim_jobs_run_check_names_its_coefficients(&stand).await;
+    stand.renew().await;
+    trim::a_trims_results_csv_says_from_run_and_total(&stand).await;
     stand.renew().await;
     warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
     stand.renew().await;

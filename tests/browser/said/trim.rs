@@ -3,7 +3,7 @@
 //! until the runs step. It now says it is a trim job and whose coefficients
 //! it is solved with: a machine's stored ones (which version), or supplied.
 //! Its run checks say what they predict from: those coefficients, not "the
-//! other runs".
+//! other runs"; its results CSV says what run it adds to and the total.
 
 use serde_json::json;
 
@@ -11,6 +11,7 @@ use crate::harness::form::field;
 use super::conventions::with_a_check_run;
 use crate::harness::stand::machine_with_coefficients;
 use crate::harness::stand::{example_session, get, open_at_solve, post, Stand};
+use crate::harness::steps::js_async;
 use crate::reopened::reopen_elsewhere;
 
 /// The trim job begun on the machine page: the set-up names the machine and
@@ -125,3 +126,62 @@ pub async fn a_trim_jobs_run_check_names_its_coefficients(stand: &Stand) {
     assert!(!said.contains("other runs"), "{said}");
 }
 
+/// A trim's results CSV says which run's state its corrections add to
+/// (`from_run`) and each plane's one replacing weight (`total`), after the
+/// columns it had (`unit`, `note` unmoved): the file of a trim did not say
+/// that its weights were to be added to those on the rotor.
+pub async fn a_trims_results_csv_says_from_run_and_total(stand: &Stand) {
+    let b = &stand.browser;
+    machine_with_coefficients(stand).await;
+    trim_check_words(
+        stand,
+        "stored trim",
+        json!({ "coefficients_from": { "machine": "PUMP-1" } }),
+    )
+    .await;
+    let got = js_async(
+        b,
+        "const [done] = arguments; \
+         Promise.all([import('/static/js/steps/sessions.js'), import('/static/js/job/state.js')]).then(([m, s]) => { \
+           const sol = s.state.solution; \
+           done({ csv: m.resultsCsv(), from: sol.from_run, totals: sol.corrections.map((c) => [c.plane, String(c.total.mass_g), String(c.total.angle_deg)]) }); })",
+    )
+    .await;
+    let csv = got["csv"].as_str().expect("CSV text");
+    let from = got["from"].as_str().expect("a trim from a run");
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    assert_eq!(
+        header[header.len() - 5..],
+        [
+            "\"unit\"",
+            "\"note\"",
+            "\"from_run\"",
+            "\"total_mass_g\"",
+            "\"total_angle_deg (with_rotation)\""
+        ],
+        "{csv}"
+    );
+    let corrections: Vec<Vec<&str>> = csv
+        .lines()
+        .filter(|l| l.starts_with("\"correction\""))
+        .map(|l| l.split(',').collect())
+        .collect();
+    let totals = got["totals"].as_array().unwrap();
+    assert_eq!(corrections.len(), totals.len(), "{csv}");
+    for (row, total) in corrections.iter().zip(totals) {
+        assert_eq!(row.len(), header.len(), "{row:?}");
+        assert_eq!(row[1], format!("\"{}\"", total[0].as_str().unwrap()));
+        assert_eq!(
+            row[row.len() - 3..],
+            [
+                format!("\"{from}\""),
+                format!("\"{}\"", total[1].as_str().unwrap()),
+                format!("\"{}\"", total[2].as_str().unwrap())
+            ],
+            "{csv}"
+        );
+    }
+    for row in csv.lines().filter(|l| l.starts_with("\"residual\"")) {
+        assert!(row.ends_with(&format!("\"{from}\",\"\",\"\"")), "{row}");
+    }
+}

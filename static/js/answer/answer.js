@@ -161,13 +161,23 @@ function checkWeights(sol, replaceInPlane) {
   return [...(sol.from_run ? on : []), ...sol.corrections.filter((c) => c.mass_g >= 0.05).flatMap(fit)].filter((w) => w.mass_g > 0);
 }
 
+/**
+ * What the corrections are fitted to when they add to no run: the rotor as
+ * found. A trim job has had no trial weights: it was told to fit them with
+ * "all trial weights removed".
+ */
+function fitWords(sol) {
+  if (!predictedFrom(sol).given) return "Fit these weights (all trial weights removed)";
+  return state.runs.some((r) => r.weights.length) ? "Fit these weights to the rotor as found (the check runs' weights removed)" : "Fit these weights to the rotor as found";
+}
+
 export function answerParts(sol, checkRun) {
   return [
     verdict(sol),
     warningsBox(sol),
     coefficientsWords(sol),
     trimWords(sol),
-    h("h3", {}, sol.from_run ? `Add these weights to what is on in run “${sol.from_run}”` : "Fit these weights (all trial weights removed)"),
+    h("h3", {}, sol.from_run ? `Add these weights to what is on in run “${sol.from_run}”` : fitWords(sol)),
     h("div", { class: "scroll" }, correctionsTable(sol)),
     doubts(sol),
     planePictures(sol),

@@ -76,7 +76,7 @@ export function bodePlot({ sensor, unit, phase, series }) {
     }
   }
   return h("figure", { class: "bode-fig", dataset: { sensor } },
-    h("figcaption", {}, `${sensor}: amplitude and phase against speed`, h("small", {}, ` ${unitLabel(unit)}, phase ${phase}`)),
+    h("figcaption", {}, `${sensor}: amplitude and phase against speed`, h("small", {}, `, ${unitLabel(unit)}, phase ${phase}`)),
     svg,
     h("ul", { class: "legend" }, series.map((line) => h("li", {}, swatch(line), line.text))));
 }
@@ -105,7 +105,7 @@ export function nyquistPlot({ sensor, unit, phase, points }) {
     if (i === 0 || i === sorted.length - 1 || sorted.length <= 6) svg.append(s("text", { x: px + 5, y: py - 4, class: "tick" }, fmt(p.speed, 0)));
   });
   return h("figure", { class: "nyquist-fig", dataset: { sensor } },
-    h("figcaption", {}, `${sensor}: as found across speeds (rpm marked)`, h("small", {}, ` ${unitLabel(unit)}, phase ${phase}`)),
+    h("figcaption", {}, `${sensor}: as found across speeds (rpm marked)`, h("small", {}, `, ${unitLabel(unit)}, phase ${phase}`)),
     svg);
 }
 

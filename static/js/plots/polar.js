@@ -85,7 +85,7 @@ export function polarPlot({ sensor, unit, speed, phase, reference, trials, resid
   return h(
     "figure",
     { class: "polar-fig" },
-    h("figcaption", {}, `${sensor} at ${fmt(speed, 0)} rpm`, h("small", {}, ` ${unitLabel(unit)}, phase ${phase}`)),
+    h("figcaption", {}, `${sensor} at ${fmt(speed, 0)} rpm`, h("small", {}, `, ${unitLabel(unit)}, phase ${phase}`)),
     svg,
     legend,
   );

@@ -5,7 +5,7 @@
 // Print CSS shows only this section on paper.
 
 import { h, replace, $ } from "../page/dom.js";
-import { fmt, fmtAngle, unitLabel, commonUnit } from "../page/num.js";
+import { fmt, fmtAngle, unitLabel, commonUnit, storedAt } from "../page/num.js";
 import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox, angleWords } from "./solve.js";
@@ -111,7 +111,7 @@ export function renderReport(root) {
     h("article", { class: "report" },
       h("header", {},
         h("h2", { class: "report-title" }, `Balancing report — ${setup.name || "unnamed"}`),
-        h("p", {}, `Machine: ${setup.machine || "–"} · ${now.toISOString().slice(0, 10)} (printed ${now.toLocaleString()})${state.id ? ` · Session ${state.id}` : ""}`),
+        h("p", {}, `Machine: ${setup.machine || "–"} · printed ${storedAt(now.toISOString())}${state.id ? ` · Session ${state.id}` : ""}`),
         h("p", {}, "Reason: ", h("span", { class: "reason-text" }, info.reason || "–"))),
       answerSection(sol),
       h("section", { class: "report-setup" },

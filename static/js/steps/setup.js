@@ -198,11 +198,11 @@ export function renderSetup(root, next) {
       { class: "planes" },
       h("legend", {}, "Correction planes"),
       h("div", { class: "scroll" }, h("table", { class: "edit" },
-        h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}, "or places at, °"), h("th", {}, "Kit weights, g"), h("th", {}))),
+        h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Radius, mm"), h("th", {}, "Fixed places"), h("th", {}, "or places at, ° from the mark"), h("th", {}, "Kit weights, g"), h("th", {}))),
         h("tbody", {}, setup.planes.map((p, i) => planeRow(p, i, locked, rerender))),
       )),
       locked ? "" : h("button", { type: "button", class: "add-plane", onclick: () => { setup.planes.push({ id: "", radius_mm: null, positions: null }); rerender(); $(`[data-field="planes[${setup.planes.length - 1}].id"]`, root).focus(); } }, "+ Add plane"),
-      h("p", { class: "hint" }, "Fixed places: the number of equally spaced holes or blades where weights can go (place 0 at the mark), or their angles when they are not equally spaced. Leave empty for a free angle. Kit: the weight sizes at hand (at most two stacked at a place); the answer then says which to bolt where."),
+      h("p", { class: "hint" }, "Fixed places: the number of equally spaced holes or blades where weights can go (place 0 at the mark, the next ones numbered the way the weight angles are counted), or their angles from the mark, counted like the weight angles, when they are not equally spaced. Leave empty for a free angle. Kit: the weight sizes at hand (at most two stacked at a place); the answer then says which to bolt where."),
     ),
     h(
       "fieldset",

@@ -91,7 +91,7 @@ export function phaseWords(solution) {
 
 export function residualTable(solution) {
   return h("table", { class: unsure(solution) ? "residual unsure" : "residual" },
-    h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, `Phase, ° ${phaseWords(solution)}`), h("th", {}, "Unit"))),
+    h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, solution.from_run ? `In run “${solution.from_run}”` : "As found"), h("th", {}, "Predicted after"), h("th", {}, "95 % bound"), h("th", {}, `Phase, ° ${phaseWords(solution)}`), h("th", {}, "Unit"))),
     h("tbody", {}, solution.predicted_residual.map((r) => h("tr", { class: r.used === false ? "unused" : "" },
       h("td", {}, fmt(r.speed_rpm, 0)),
       h("td", {}, r.sensor),

@@ -26,6 +26,7 @@ mod samples;
 mod trim;
 mod units;
 mod unreachable;
+mod walk;
 mod warnings;
 
 /// Jeffcott rotors for the identification scenes (`damping`, `critical`).
@@ -70,5 +71,7 @@ async fn the_form_says_what_the_service_means() {
     bound::a_limit_a_twin_plane_makes_up_for_is_not_called_costly(&stand).await;
     stand.renew().await;
     retry::a_store_that_half_succeeded_is_not_taken_for_another_tab(&stand).await;
+    stand.renew().await;
+    walk::what_a_technician_reads_walking_a_job(&stand).await;
     stand.stop().await;
 }

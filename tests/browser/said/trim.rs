@@ -7,8 +7,8 @@
 
 use serde_json::json;
 
-use crate::harness::form::field;
 use super::conventions::with_a_check_run;
+use crate::harness::form::field;
 use crate::harness::stand::machine_with_coefficients;
 use crate::harness::stand::{example_session, get, open_at_solve, post, Stand};
 use crate::harness::steps::js_async;

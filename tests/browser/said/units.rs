@@ -9,7 +9,9 @@
 use serde_json::json;
 
 use super::conventions::with_a_check_run;
-use crate::harness::stand::{example_session, machine_with_coefficients, open_at_solve, post, Stand};
+use crate::harness::stand::{
+    example_session, machine_with_coefficients, open_at_solve, post, Stand,
+};
 use crate::harness::steps::{js, js_async};
 
 pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
@@ -80,7 +82,12 @@ pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
     }
     let created = post(stand, "/api/v1/sessions", other).await;
     let id = created["id"].as_str().expect("stored");
-    post(stand, &format!("/api/v1/sessions/{id}/solutions"), json!({})).await;
+    post(
+        stand,
+        &format!("/api/v1/sessions/{id}/solutions"),
+        json!({}),
+    )
+    .await;
     b.click("nav [data-step=\"machines\"]").await;
     b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
     b.wait_for("table.machine-jobs td.after").await;
@@ -93,7 +100,11 @@ pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
     let rows = rows.as_array().expect("rows");
     assert_eq!(rows.len(), 2, "{rows:?}");
     for row in rows {
-        let unit = if row[0] == "in mils" { "mils pk-pk" } else { "µm pk-pk" };
+        let unit = if row[0] == "in mils" {
+            "mils pk-pk"
+        } else {
+            "µm pk-pk"
+        };
         for cell in [&row[1], &row[2]] {
             let cell = cell.as_str().unwrap();
             assert!(cell.ends_with(&format!(" {unit}")), "{row:?}");

@@ -118,7 +118,10 @@ pub async fn every_solve_warning_is_shown_with_its_message_beside_its_plane(stan
         let message = w["message"].as_str().unwrap().replace('"', "\"\"");
         // The columns after `note` (a trim's from_run and total) are empty.
         let fields: Vec<&str> = header.split(',').collect();
-        let note = fields.iter().position(|f| *f == "\"note\"").expect("a note column");
+        let note = fields
+            .iter()
+            .position(|f| *f == "\"note\"")
+            .expect("a note column");
         let after = ",\"\"".repeat(fields.len() - 1 - note);
         assert!(
             row.ends_with(&format!(

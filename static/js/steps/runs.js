@@ -8,7 +8,7 @@ import { numberInput, textInput, selectInput, validateAll, clearMarks, markServe
 import { fmt, fmtReading, unitLabel, DECIMAL_RULE } from "../page/num.js";
 import { api, ApiError, unwrapSession } from "../job/api.js";
 import { keepNow } from "../job/keep.js";
-import { state, rows, readingFor, setupJson, runJson, referenceRun, changed, loadSession, triedPlanes, trimWords } from "../job/state.js";
+import { state, rows, readingFor, setupJson, setupOf, runJson, referenceRun, changed, loadSession, triedPlanes, trimWords } from "../job/state.js";
 import { csvImportButton, CSV_SHAPES } from "./csv.js";
 import { retrialQuestion, ask, suggestionBox } from "./trial.js";
 import { trialCount, runKinds } from "./options.js";
@@ -185,6 +185,23 @@ function sentRunLanded(storedRuns, sent) {
   return storedRuns.some((r) => runKey(r) === runKey(sent)) && sameRuns(others(storedRuns), others(known));
 }
 
+/**
+ * The session a create whose answer was lost stored, or null: among the
+ * newest sessions, one with this job's name and set-up and the sent zero run
+ * alone. Store again would otherwise store the job twice.
+ */
+async function createdBefore(sent) {
+  const data = await api.listSessions(50, 0);
+  const listed = (data && data.sessions) || [];
+  const setup = spelling(setupJson());
+  for (const x of listed.filter((x) => x.name === state.setup.name && x.runs === 1)) {
+    const session = unwrapSession(await api.getSession(x.id));
+    const runs = session.runs || [];
+    if (runs.length === 1 && runKey(runs[0]) === runKey(sent) && spelling(setupJson(setupOf(session))) === setup) return x.id;
+  }
+  return null;
+}
+
 /** The run is stored: the draft goes, and the page goes on to what comes next. */
 function stored(root, words) {
   state.draft = null;
@@ -219,6 +236,21 @@ async function store(root, rerender) {
   // session's tag back) did not leave the run unstored.
   let written = false;
   try {
+    const before = state.id === null && d.sent ? await createdBefore(d.sent) : null;
+    if (before !== null) {
+      // The last Store created the job and only its answer was lost.
+      state.id = before;
+      history.replaceState({ step: "runs" }, "", `#session=${encodeURIComponent(before)}&step=runs`);
+      state.runs = [{ ...d.sent, stored: true }];
+      if (runKey(run) === runKey(d.sent)) {
+        state.etag = (await api.getSessionTagged(state.id)).etag;
+        return stored(root, `The job is stored with its zero run “${run.id}”: the service took it when Store was pressed before, and only its answer was lost. It is stored once.`);
+      }
+      // Changed since it was sent: what was typed since corrects it.
+      d.index = 0;
+      d.etag = null;
+      d.sent = null;
+    }
     if (state.id === null) {
       const session = { ...setupJson(), runs: [run] };
       d.sent = runJson(run);
@@ -275,7 +307,7 @@ async function store(root, rerender) {
       keepNow();
       if (!uncertain) return banner(root, "error", "The fieldbal service does not answer, so the run was not stored. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again.");
       if (state.id === null) {
-        return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the job was stored with its zero run: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then look in Sessions; if the job is listed there open it, else press Store again.");
+        return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the job was stored with its zero run: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again; the form looks for the job among the stored sessions first, and stores it only if it is not there.");
       }
       return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the run was stored: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again; the form looks at what is stored first, and stores the run only if it is not there.");
     }

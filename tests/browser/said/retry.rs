@@ -6,7 +6,8 @@
 //! had edited the job. Now a run the service took is said to be stored; a
 //! write whose answer was lost is said to be uncertain, and Store pressed
 //! again (also after a reload) sees the run stored as sent and goes on; each
-//! run is stored once.
+//! run is stored once. A new job's zero run, whose create lost its answer,
+//! is looked for among the stored sessions: the job is stored once.
 //!
 //! How the answer is lost in a real browser: the page's `fetch` is replaced,
 //! for one call, by one that lets the request reach the service and then
@@ -15,7 +16,9 @@
 
 use serde_json::{json, Value};
 
-use crate::harness::form::{cells, choose, field, type_cells_with_tab, type_into, typed};
+use crate::harness::form::{
+    cells, choose, field, type_cells_with_tab, type_into, type_setup, typed,
+};
 use crate::harness::stand::{example_session, get, post, Stand};
 use crate::harness::steps::js;
 use crate::harness::Browser;
@@ -192,11 +195,38 @@ pub async fn a_store_that_half_succeeded_is_not_taken_for_another_tab(stand: &St
         Some(2),
         "the run as typed and its correction, once: {versions}"
     );
-}
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn dev_form20b() {
-    let stand = Stand::start().await;
-    a_store_that_half_succeeded_is_not_taken_for_another_tab(&stand).await;
-    stand.stop().await;
+    // (d) A new job: the create that stores it with its zero run loses its
+    // answer. Store again finds the job among the stored sessions.
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("#step-sessions button.new-session").await;
+    let mut fresh = session.clone();
+    fresh["name"] = json!("a new job");
+    type_setup(b, &fresh).await;
+    b.click("#step-setup button.next").await;
+    type_cells_with_tab(b, 0, &cells(&fresh, &fresh["runs"][0])).await;
+    lose_the_answer_of(b, "POST", "/api/v1/sessions").await;
+    let said = press_store(b).await;
+    assert!(
+        said.contains("error") && said.contains("cannot tell whether the job was stored"),
+        "{said}"
+    );
+    let said = press_store(b).await;
+    assert!(
+        !said.contains("error") && said.contains("stored once"),
+        "{said}"
+    );
+    let listed = get(stand, "/api/v1/sessions").await;
+    let named = listed["sessions"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{listed}"))
+        .iter()
+        .filter(|x| x["name"] == "a new job")
+        .count();
+    assert_eq!(named, 1, "the new job stored once: {listed}");
+    let here = js(b, "return location.hash").await;
+    assert!(
+        here.as_str().unwrap().contains("session="),
+        "the page is on the stored job: {here}"
+    );
 }

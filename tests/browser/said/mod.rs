@@ -1,19 +1,19 @@
 //! What the form says matches what the service means: a damping the readings
 //! cannot resolve is shown as the bound it is, with the service's warning
 //! (`damping`), a critical outside the speeds measured as extrapolated
-//! (`critical`), a solution's date
-//! in the one format of every other stored time (`dates`), and a trim job's
-//! set-up says it is one and with which coefficients, and its run checks
-//! what they predict from, its results CSV what run it adds to (`trim`);
-//! every warning
-//! of a solve with the service's message, beside the plane it names
-//! (`warnings`); every angle of the answer and the report with its
-//! convention (`conventions`), every amplitude with its unit (`units`);
-//! coefficients pooled from jobs that disagree say so (`pooled`); a run
-//! typed while the service is away is kept and stored later (`unreachable`);
-//! readings with repeated samples say so in the grid (`samples`); a mass
-//! limit that a twin plane makes up for is not called costly (`bound`); a
-//! store whose answer was lost is not taken for another tab's (`retry`).
+//! (`critical`), a solution's date in the one format of every other stored
+//! time (`dates`), and a trim job's set-up says it is one and with which
+//! coefficients, its run checks what they predict from, its results CSV
+//! what run it adds to (`trim`); every warning of a solve with the service's
+//! message, beside the plane it names (`warnings`); every angle of the
+//! answer and the report with its convention (`conventions`), every
+//! amplitude with its unit, on the machine page too (`units`); coefficients
+//! pooled from jobs that disagree say so (`pooled`); a run typed while the
+//! service is away is kept and stored later (`unreachable`); readings with
+//! repeated samples say so in the grid (`samples`); a mass limit that a twin
+//! plane makes up for is not called costly (`bound`); a store whose answer
+//! was lost is not taken for another tab's, nor stored twice (`retry`); what
+//! a technician read walking a job through the form (`walk`).
 
 mod bound;
 mod conventions;

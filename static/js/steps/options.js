@@ -4,7 +4,7 @@
 
 import { h } from "../page/dom.js";
 import { numberInput } from "../page/fields.js";
-import { fmt } from "../page/num.js";
+import { fmt, commonUnit } from "../page/num.js";
 import { state } from "../job/state.js";
 
 /** Stored runs whose state a trim can start from: every run with weights. */
@@ -101,9 +101,10 @@ export function optionsPanel() {
         h("option", { value: "least_squares", selected: o.objective === "least_squares" }, "the sum of squares (usual)"),
         h("option", { value: "min_max", selected: o.objective === "min_max" }, "the largest vibration"))),
       withWeights.length ? h("label", {}, h("span", {}, "Correct the rotor as it is in"), h("select", { class: "from-run", onchange: (e) => (o.fromRun = e.target.value) },
-        h("option", { value: "", selected: !from }, "the zero run (all trial weights off)"),
+        // A trim job had no trial weights to take off.
+        h("option", { value: "", selected: !from }, state.setup.trim ? "the zero run (as found)" : "the zero run (all trial weights off)"),
         withWeights.map((r) => h("option", { value: r.id, selected: from === r.id }, `run “${r.id}” (its weights stay on)`)))) : "",
-      h("label", {}, h("span", {}, "Acceptable vibration (largest reading, sensor units)"), numberInput({ field: "options.limit", kind: "limit", value: o.limit ?? null, required: false, label: "Acceptable vibration", placeholder: "none", onValue: (v) => (o.limit = v) })),
+      h("label", {}, h("span", {}, `Acceptable vibration (largest reading, ${commonUnit(state.setup.sensors) || "sensor units"})`), numberInput({ field: "options.limit", kind: "limit", value: o.limit ?? null, required: false, label: "Acceptable vibration", placeholder: "none", onValue: (v) => (o.limit = v) })),
       h("label", { class: "tick" }, h("input", { type: "checkbox", class: "drop", checked: !!o.drop, onchange: (e) => (o.drop = e.target.checked) }), " leave out planes the sensors cannot tell apart"),
       h("div", { class: "noise" },
         h("span", {}, "Reading repeatability (for the 95 % figures)"),

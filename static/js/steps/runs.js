@@ -428,7 +428,11 @@ export function renderRuns(root, solve) {
     h("p", { class: "lead" }, d && d.zero && d.index === null
       ? "Zero run: the rotor as found, with no weights. Type the analyser's 1X amplitude and phase for every sensor; Tab moves to the next cell, Enter stores the run."
       : d && d.check
-        ? "Check run: with every trial weight off and the corrections fitted (the weights below), run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
+        ? state.setup.trim
+          // A trim job had no trial weights, and its check runs test the
+          // coefficients it is solved with rather than sharpen them.
+          ? `Check run: with the corrections fitted (the weights below), run the machine and type the readings. They also show whether ${trimWords()} still hold for this rotor.`
+          : "Check run: with every trial weight off and the corrections fitted (the weights below), run the machine and type the readings. They also sharpen the influence coefficients for a trim solve."
         : !d && lastKind() === "check"
           ? `Check run “${state.runs[state.runs.length - 1].id}” stored: solve again, and the answer says what remains and what to add to the rotor as it is in this run.${state.setup.trim ? "" : ` Every plane has had its trial weight (${tried} of ${planes}).`}`
         : state.setup.trim && referenceRun()

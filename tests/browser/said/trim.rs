@@ -72,7 +72,7 @@ pub async fn a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(stand: 
 
 /// A trim job with a check run, stored with `trim` (the machine's stored
 /// coefficients, or supplied ones), solved in the form: the run's check.
-async fn trim_check_words(stand: &Stand, name: &str, trim: serde_json::Value) -> String {
+pub(super) async fn trim_check_words(stand: &Stand, name: &str, trim: serde_json::Value) -> String {
     let b = &stand.browser;
     let (pump, _) = example_session("pump-two-plane-exact.json");
     let checked = with_a_check_run(stand, pump).await;

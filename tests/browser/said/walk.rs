@@ -5,7 +5,11 @@
 //! polar plots' titles ran the speed into the unit ("2950 rpm µm pk-pk");
 //! the report's print time was in the browser's own format, unlike every
 //! other time of the form; the set-up's fixed places gave angles with no
-//! word of where they are counted from or which way.
+//! word of where they are counted from or which way; the acceptable
+//! vibration was asked in "sensor units" when every sensor reads in one; a
+//! trim job's check run was to be typed "with every trial weight off", to
+//! "sharpen the influence coefficients", and its trim offered "the zero run
+//! (all trial weights off)".
 
 use serde_json::json;
 
@@ -41,6 +45,9 @@ pub async fn what_a_technician_reads_walking_a_job(stand: &Stand) {
     // The trim adds to the check run: its readings are no "as found".
     let residual = headers(b, "#step-solve table.residual").await;
     assert_eq!(residual[2], "In run “check 1”", "{residual:?}");
+    // In the options (folded: their text, not what is drawn).
+    let limit = js(b, "return document.querySelector('#step-solve details.options label:has(input[data-field=\"options.limit\"]) span').textContent").await;
+    assert_eq!(limit, "Acceptable vibration (largest reading, µm pk-pk)");
     let title = b.text("#step-solve .polar-fig figcaption").await;
     assert_eq!(title, "DE-H at 2950 rpm, µm pk-pk, phase lead");
 
@@ -86,4 +93,22 @@ pub async fn what_a_technician_reads_walking_a_job(stand: &Stand) {
     assert_eq!(fit, json!("Fit these weights to the rotor as found"));
     let residual = headers(b, "#step-solve table.residual").await;
     assert_eq!(residual[2], "As found", "{residual:?}");
+    b.click("#step-solve button.check-run").await;
+    let lead = b.text("#step-runs p.lead").await;
+    assert!(
+        !lead.contains("trial weight")
+            && lead.contains("whether the stored coefficients of machine PUMP-1 still hold"),
+        "{lead}"
+    );
+    b.click("#step-runs button.cancel").await;
+
+    // A trim job with a check run: its trim may start from the zero run as found.
+    super::trim::trim_check_words(
+        stand,
+        "trim with a check run",
+        json!({ "coefficients_from": { "machine": "PUMP-1" } }),
+    )
+    .await;
+    let zero = js(b, "return document.querySelector('#step-solve select.from-run option[value=\"\"]').textContent").await;
+    assert_eq!(zero, "the zero run (as found)");
 }

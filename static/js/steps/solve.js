@@ -145,8 +145,8 @@ export function summaryBox(solution) {
 
 export function warningsBox(solution) {
   if (!solution.warnings.length) {
-    // A trim from stored coefficients has no trial runs to speak of.
-    return h("div", { class: "warnings none" }, solution.coefficients_from ? "No warnings." : "No warnings: the trial runs were clear and the planes independent.");
+    // A trim job, from stored or supplied coefficients, has no trial runs to speak of.
+    return h("div", { class: "warnings none" }, solution.coefficients_from || state.setup.trim ? "No warnings." : "No warnings: the trial runs were clear and the planes independent.");
   }
   return h("div", { class: "warnings", role: "alert" },
     h("h3", {}, solution.warnings.length === 1 ? "1 warning — read before fitting weights" : `${solution.warnings.length} warnings — read before fitting weights`),

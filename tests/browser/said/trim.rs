@@ -124,6 +124,9 @@ pub async fn a_trim_jobs_run_check_names_its_coefficients(stand: &Stand) {
         "{said}"
     );
     assert!(!said.contains("other runs"), "{said}");
+    // It had no trial runs to be clear.
+    let none = stand.browser.text("#step-solve .warnings.none").await;
+    assert_eq!(none, "No warnings.");
 }
 
 /// A trim's results CSV says which run's state its corrections add to

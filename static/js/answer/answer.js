@@ -111,6 +111,8 @@ function checkNote(c) {
 /** Where the influence coefficients came from, when not from this job's trial runs. */
 function coefficientsWords(sol) {
   const from = sol.coefficients_from;
+  const supplied = state.setup.trim && state.setup.trim.influence_coefficients;
+  if (!from && supplied) return h("p", { class: "coefficients-from" }, `Influence coefficients: the ${supplied.length} supplied with the job (no trial runs in this job).`);
   if (!from) return "";
   return h("p", { class: "coefficients-from" }, `Influence coefficients: the stored ones of machine ${from.machine}, version ${from.version ?? "latest"} (no trial runs in this job).`);
 }

@@ -69,10 +69,18 @@ function weightRows(run) {
     h("td", {}, fmtAngle(w.angle_deg)), h("td", { class: "place" }, placeOf(planes.get(w.plane), w.angle_deg))));
 }
 
+/** Where the coefficients came from: a trim job with supplied ones did not estimate them from its runs. */
+function coefficientsSource(sol) {
+  if (sol.coefficients_from) return `Stored coefficients of machine ${sol.coefficients_from.machine}, version ${sol.coefficients_from.version ?? "latest"}.`;
+  const supplied = state.setup.trim && state.setup.trim.influence_coefficients;
+  if (supplied) return `Supplied with the job (${supplied.length} coefficient${supplied.length === 1 ? "" : "s"}), not estimated from its runs.`;
+  return "Estimated from this job's runs by least squares.";
+}
+
 function coefficientsTable(sol) {
   const units = new Map(state.setup.sensors.map((x) => [x.id, x.unit]));
   return [
-    sol.coefficients_from ? h("p", {}, `Stored coefficients of machine ${sol.coefficients_from.machine}, version ${sol.coefficients_from.version ?? "latest"}.`) : h("p", {}, "Estimated from this job's runs by least squares."),
+    h("p", { class: "coefficients-source" }, coefficientsSource(sol)),
     h("table", { class: "report-coefficients" },
       h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Amplitude per gram"), h("th", {}, `Phase, ° ${phaseOf(sol.conventions || state.setup.conventions)}`))),
       h("tbody", {}, (sol.influence_coefficients || []).map((c) => h("tr", {},

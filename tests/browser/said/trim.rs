@@ -124,9 +124,23 @@ pub async fn a_trim_jobs_run_check_names_its_coefficients(stand: &Stand) {
         "{said}"
     );
     assert!(!said.contains("other runs"), "{said}");
-    // It had no trial runs to be clear.
-    let none = stand.browser.text("#step-solve .warnings.none").await;
+    // It had no trial runs to be clear, and did not estimate its coefficients.
+    let b = &stand.browser;
+    let none = b.text("#step-solve .warnings.none").await;
     assert_eq!(none, "No warnings.");
+    let source = b.text("#step-solve p.coefficients-from").await;
+    assert_eq!(
+        source,
+        format!(
+            "Influence coefficients: the {n} supplied with the job (no trial runs in this job)."
+        )
+    );
+    b.click("nav [data-step=\"report\"]").await;
+    let source = b.text("#step-report p.coefficients-source").await;
+    assert_eq!(
+        source,
+        format!("Supplied with the job ({n} coefficients), not estimated from its runs.")
+    );
 }
 
 /// A trim's results CSV says which run's state its corrections add to

@@ -84,7 +84,6 @@ pub async fn get(stand: &Stand, path: &str) -> Value {
         .unwrap()
 }
 
-/// The id of the first session the service lists (the one a test stored).
 /// Open the stored job `id` at its solve step in a fresh page and wait until
 /// it can be solved.
 pub async fn open_at_solve(stand: &Stand, id: &str) {
@@ -101,6 +100,7 @@ pub async fn open_at_solve(stand: &Stand, id: &str) {
         .await;
 }
 
+/// The id of the first session the service lists (the one a test stored).
 pub async fn stored_session_id(stand: &Stand) -> String {
     let list = get(stand, "/api/v1/sessions").await;
     list["sessions"][0]["id"]

@@ -32,7 +32,9 @@ squares' true one per plane.
 
 Plain least squares stands in for the answer (Ĉ is least squares, method
 §8, session 13). The jobs of a case are drawn with seed 7 (the same for
-every world), each world's resamples with seed [7, its number in WORLDS]. Not run by CI (NumPy is not a dependency). Usage:
+every world), each world's resamples with seed [7, its number in WORLDS].
+Not run by CI (NumPy is not a dependency). About 8 min for 400 jobs and 200
+resamples on a busy 2-core machine. Usage:
   python3 scripts/issue12_denoised_bootstrap.py REALISATIONS RESAMPLES [diag] [CASE ...]
 e.g. python3 scripts/issue12_denoised_bootstrap.py 400 200
 """

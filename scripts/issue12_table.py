@@ -30,6 +30,9 @@ printed):
            and realisations of amplitude_95 over the true 95th percentile of
            that row's remaining vibration (over the realisations).
 
+`samples` prints the same table with six samples per reading (2 %/2°
+each) in place of the stated noise, the options left empty (same seeds).
+
 `points` prints the issue's point checks (exact readings unless said):
 a plane whose trial changed nothing; two planes with identical influence;
 and its point 5 — readings 2.01 % apart in speed with a third sensor's speed
@@ -39,7 +42,7 @@ one sensor selected.
 
 Not run by CI (NumPy is not a dependency). About 2 min for 400 realisations
 on a busy 2-core machine. Usage:
-  python3 scripts/issue12_table.py target/release/fieldbal [realisations] [table|points]
+  python3 scripts/issue12_table.py target/release/fieldbal [realisations] [table|samples|points]
 """
 import json
 import subprocess
@@ -78,13 +81,13 @@ def polar(u):
     return u["mass_g"] * np.exp(1j * np.radians(u["angle_deg"]))
 
 
-def case(binary, number, name, speeds, effect, reps, pool):
+def case(binary, number, name, speeds, effect, reps, pool, samples=False):
     w, y0, t = rotor(name, speeds, effect)
     c = -np.linalg.lstsq(w, y0, rcond=None)[0]
     exact = np.stack([y0] + [y0 + w[:, j] * t[j] for j in range(3)], axis=1)
     rng = np.random.default_rng(21000 + number)
-    sessions = [noisy_session(rng, exact, t, speeds, SENSORS) for _ in range(reps)]
-    opts = {"amplitude_noise_pct": 2.0, "phase_noise_deg": 2.0}
+    sessions = [noisy_session(rng, exact, t, speeds, SENSORS, samples) for _ in range(reps)]
+    opts = {} if samples else {"amplitude_noise_pct": 2.0, "phase_noise_deg": 2.0}
     answers = list(pool.map(lambda s: solve(binary, s, opts), sessions))
     hits, warned, chat, cstar, remain, amp95 = [], [], [], [], [], []
     codes = {}
@@ -212,7 +215,7 @@ def main():
         return
     pool = ThreadPoolExecutor(2)
     for number, (name, speeds, effect) in enumerate(CASES):
-        case(binary, number, name, speeds, effect, reps, pool)
+        case(binary, number, name, speeds, effect, reps, pool, samples=what == "samples")
 
 
 if __name__ == "__main__":

@@ -6,58 +6,32 @@
 //! character; above all no NUL, which PostgreSQL's text cannot store (it
 //! answered 500 where SQLite stored it).
 //!
-//! Only what a request defines is checked (a posted session, an appended
-//! run, a posted machine), never what is stored already: a session stored
-//! before these rules still takes runs and corrections.
+//! The rules themselves are the core's (`balancing::validate`), which
+//! applies the id rule to a session's planes, sensors and runs wherever a
+//! session is validated (`/api/v1/solve` too); the store adds the machine a
+//! session names, texts and machines.
+//!
+//! The store checks only what a request defines (a posted session, an
+//! appended run, a posted machine), never what is stored already: a session
+//! stored before these rules with such a machine or label still takes runs
+//! and corrections (one whose plane, sensor or run ids hold control
+//! characters no longer validates, in the store or in the solve).
 
 use crate::balancing::model::{Run, Session};
+use crate::balancing::validate;
 use crate::balancing::InputError;
 use crate::db::machines::NewMachine;
 
-/// The first character of `s` that `bad` refuses, with its position (from 1).
-fn first(s: &str, bad: impl Fn(char) -> bool) -> Option<(usize, char)> {
-    s.chars()
-        .enumerate()
-        .find(|&(_, c)| bad(c))
-        .map(|(i, c)| (i + 1, c))
-}
-
-fn refused(field: impl Into<String>, what: &str, at: usize, c: char) -> InputError {
-    InputError::invalid(
-        "invalid_value",
-        field,
-        format!(
-            "{what}; this one has U+{:04X} at character {at}",
-            u32::from(c)
-        ),
-    )
-}
-
-/// An id the client chooses: no control character (Unicode Cc: U+0000 to
-/// U+001F, U+007F to U+009F).
+/// An id the client chooses: the core's rule, the one definition of what an
+/// id may hold (no control character).
 pub fn check_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> {
-    match first(id, char::is_control) {
-        None => Ok(()),
-        Some((at, c)) => Err(refused(
-            field(),
-            "an id holds no control characters (U+0000 to U+001F, U+007F to U+009F)",
-            at,
-            c,
-        )),
-    }
+    validate::check_id_chars(field, id)
 }
 
-/// A free text: tabs and line breaks, but no other control character.
+/// A free text: tabs and line breaks, but no other control character (the
+/// core's rule for texts).
 pub fn check_text(field: impl FnOnce() -> String, text: &str) -> Result<(), InputError> {
-    match first(text, |c| c.is_control() && !matches!(c, '\t' | '\n' | '\r')) {
-        None => Ok(()),
-        Some((at, c)) => Err(refused(
-            field(),
-            "a text holds no control characters but tabs and line breaks",
-            at,
-            c,
-        )),
-    }
+    validate::check_text_chars(field, text)
 }
 
 /// The strings a posted session defines.
@@ -76,20 +50,13 @@ pub fn check_session(s: &Session) -> Result<(), InputError> {
             ));
         }
     }
-    for (i, p) in s.planes.iter().enumerate() {
-        check_id(|| format!("planes[{i}].id"), &p.id)?;
-    }
+    // The planes', sensors' and runs' ids and `trim.coefficients_from.machine`
+    // are the core's ids: it checks them (with the same rule) when the
+    // session is validated, stored or solved.
     for (i, x) in s.sensors.iter().enumerate() {
-        check_id(|| format!("sensors[{i}].id"), &x.id)?;
         if let Some(l) = &x.label {
             check_text(|| format!("sensors[{i}].label"), l)?;
         }
-    }
-    for (i, r) in s.runs.iter().enumerate() {
-        check_id(|| format!("runs[{i}].id"), &r.id)?;
-    }
-    if let Some(from) = s.trim.as_ref().and_then(|t| t.coefficients_from.as_ref()) {
-        check_id(|| "trim.coefficients_from.machine".into(), &from.machine)?;
     }
     Ok(())
 }

@@ -27,7 +27,57 @@ fn check_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> 
             format!("ids are 1 to 64 characters; this one has {n}"),
         ));
     }
-    Ok(())
+    check_id_chars(field, id)
+}
+
+/// The first character of `s` that `bad` refuses, with its position (from 1).
+fn first(s: &str, bad: impl Fn(char) -> bool) -> Option<(usize, char)> {
+    s.chars()
+        .enumerate()
+        .find(|&(_, c)| bad(c))
+        .map(|(i, c)| (i + 1, c))
+}
+
+fn refused(field: String, what: &str, at: usize, c: char) -> InputError {
+    invalid(
+        field,
+        format!(
+            "{what}; this one has U+{:04X} at character {at}",
+            u32::from(c)
+        ),
+    )
+}
+
+/// What an id may hold, the one rule for every id a client chooses (planes,
+/// sensors, runs, machines; the store's too): no control character (Unicode
+/// Cc: U+0000 to U+001F, U+007F to U+009F). Ids go into paths, headers, file
+/// names and lists, where a newline or a NUL is invisible or breaks the line.
+pub fn check_id_chars(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> {
+    match first(id, char::is_control) {
+        None => Ok(()),
+        Some((at, c)) => Err(refused(
+            field(),
+            "an id holds no control characters (U+0000 to U+001F, U+007F to U+009F)",
+            at,
+            c,
+        )),
+    }
+}
+
+/// What a free text (a name, a label, notes) may hold: tabs and line breaks,
+/// but no other control character. The core does not apply it to a
+/// session's texts (a stored session may hold them from before the rule);
+/// the store applies it to what a request defines.
+pub fn check_text_chars(field: impl FnOnce() -> String, text: &str) -> Result<(), InputError> {
+    match first(text, |c| c.is_control() && !matches!(c, '\t' | '\n' | '\r')) {
+        None => Ok(()),
+        Some((at, c)) => Err(refused(
+            field(),
+            "a text holds no control characters but tabs and line breaks",
+            at,
+            c,
+        )),
+    }
 }
 
 fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError> {

@@ -175,10 +175,12 @@ async fn versions_pooled_while_the_machine_is_deleted_and_created_again_never_re
 async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id() {
     let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/sessions");
-    let long = "M".repeat(65);
-    let (status, _, err) = post(&client, &url, &job_session(&long, 55)).await;
-    assert_eq!(status, 422, "{err}");
-    assert_eq!(err["error"]["field"], "machine");
+    // Too long, or empty: a machine id has 1 to 64 characters.
+    for bad in ["M".repeat(65), String::new()] {
+        let (status, _, err) = post(&client, &url, &job_session(&bad, 55)).await;
+        assert_eq!(status, 422, "{bad:?}: {err}");
+        assert_eq!(err["error"]["field"], "machine", "{bad:?}: {err}");
+    }
     let (_, _, list) = send(client.get(&url)).await;
     assert_eq!(list["total"], 0, "nothing stored");
     let longest = "\u{e9}".repeat(64);

@@ -40,9 +40,10 @@ pub fn check_session(s: &Session) -> Result<(), InputError> {
     if let Some(m) = &s.machine {
         check_id(|| "machine".into(), m)?;
         // The core allows any short text; a stored session's machine is
-        // looked up as a machine's id, which has at most 64 characters.
+        // looked up as a machine's id, which has 1 to 64 characters (an
+        // empty one named no machine, yet was stored as naming one).
         let n = m.chars().count();
-        if n > 64 {
+        if n == 0 || n > 64 {
             return Err(InputError::invalid(
                 "invalid_value",
                 "machine",

@@ -221,3 +221,44 @@ async fn a_pool_listing_more_sessions_than_the_limit_is_refused_before_any_is_re
         (Some("duplicate_id"), Some("sessions[999]"))
     );
 }
+
+#[tokio::test]
+async fn a_version_no_machine_could_have_is_a_bad_value_not_a_missing_one() {
+    let (_dir, server, client) = fresh_server().await;
+    let (status, _, _) = post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "V-1"}),
+    )
+    .await;
+    assert_eq!(status, 201);
+    let s = store(&client, &server, &job_session("V-1", 61)).await;
+    assert_eq!(pool(&client, &server, "V-1", &s).await["version"], 1);
+    let url = |q: &str| server.url(&format!("/api/v1/machines/V-1/coefficients{q}"));
+    // Versions are numbered from 1: 0 or below is never a version (it was
+    // answered 404 as if it might have been one), whether the machine
+    // exists or not.
+    for q in ["?version=0", "?version=-1", "?version=-9223372036854775808"] {
+        for u in [
+            url(q),
+            server.url(&format!("/api/v1/machines/NOPE/coefficients{q}")),
+        ] {
+            let (status, _, err) = send(client.get(&u)).await;
+            assert_eq!(status, 422, "{u}: {err}");
+            assert_eq!(err["error"]["code"], "out_of_range", "{u}: {err}");
+            assert_eq!(err["error"]["field"], "version", "{u}: {err}");
+        }
+    }
+    // Not a number at all: the query's syntax (as `limit=many`), 400.
+    for q in ["?version=1.5", "?version=x", "?version="] {
+        let (status, _, err) = send(client.get(url(q))).await;
+        assert_eq!(status, 400, "{q}: {err}");
+        assert_eq!(err["error"]["field"], "version", "{q}: {err}");
+    }
+    // A version that could exist but does not stays 404 naming it.
+    let (status, _, err) = send(client.get(url("?version=2"))).await;
+    assert_eq!(status, 404, "{err}");
+    assert_eq!(err["error"]["field"], "version", "{err}");
+    let (status, _, got) = send(client.get(url("?version=1"))).await;
+    assert_eq!((status, &got["version"]), (200, &json!(1)), "{got}");
+}

@@ -272,7 +272,9 @@ pub struct VersionParams {
     params(("id" = String, Path, description = "Machine id"), VersionParams),
     responses(
         (status = 200, description = "The coefficient version asked for, or the latest", body = StoredCoefficients),
+        (status = 400, description = "An unknown query parameter, or a `version` that is not a whole number", body = ErrorBody),
         (status = 404, description = "No such machine or version", body = ErrorBody),
+        (status = 422, description = "A `version` below 1 (`out_of_range`)", body = ErrorBody),
     ))]
 pub async fn get_coefficients(
     State(state): State<AppState>,
@@ -280,6 +282,16 @@ pub async fn get_coefficients(
     params: Result<Query<VersionParams>, QueryRejection>,
 ) -> Result<Json<StoredCoefficients>, ApiError> {
     let Query(params) = params.map_err(invalid_query)?;
+    // Versions are numbered from 1: below that no machine could have the
+    // version, a bad value (as `limit=0`), not a missing one.
+    if let Some(v) = params.version.filter(|&v| v < 1) {
+        return Err(InputError::invalid(
+            "out_of_range",
+            "version",
+            format!("versions are numbered from 1; this one is {v}"),
+        )
+        .into());
+    }
     match machines::coefficients(&state.db, &id, params.version).await? {
         Ok(c) => Ok(Json(c)),
         Err(Missing::Machine) => Err(no_machine(&id)),

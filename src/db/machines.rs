@@ -164,8 +164,10 @@ pub async fn create(
     Ok(machine)
 }
 
-/// A page of machines, newest first.
+/// A page of machines, newest first, and how many there are in all, both
+/// from one snapshot (as `sessions::list`).
 pub async fn list(db: &Db, page: ListPage) -> Result<MachineList, StoreError> {
+    let mut read = db.begin_read().await?;
     // One more than the page: whether a next page exists.
     let mut rows = sqlx::query(
         "SELECT seq, id, name, rotor, notes, created_at FROM machines
@@ -174,12 +176,13 @@ pub async fn list(db: &Db, page: ListPage) -> Result<MachineList, StoreError> {
     .bind(page.before.unwrap_or(i64::MAX))
     .bind(page.limit + 1)
     .bind(page.offset)
-    .fetch_all(&db.pool)
+    .fetch_all(&mut *read)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM machines")
-        .fetch_one(&db.pool)
+        .fetch_one(&mut *read)
         .await?
         .get(0);
+    read.commit().await?;
     let more = rows.len() as i64 > page.limit;
     rows.truncate(page.limit as usize);
     let next = more

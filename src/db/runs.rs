@@ -171,7 +171,8 @@ pub async fn replace(
     Ok(version)
 }
 
-/// A page of a run's versions, oldest first, and how many there are in all.
+/// A page of a run's versions, oldest first, and how many there are in all,
+/// from one snapshot (as `sessions::list`).
 pub async fn versions(
     db: &Db,
     id: &str,
@@ -179,7 +180,8 @@ pub async fn versions(
     limit: i64,
     offset: i64,
 ) -> Result<(Vec<RunVersion>, i64), StoreError> {
-    let seq = sessions::seq_of(&db.pool, db.engine, id).await?;
+    let mut read = db.begin_read().await?;
+    let seq = sessions::seq_of(&mut *read, db.engine, id).await?;
     if never_stored(db.engine, run_id) {
         return Err(no_run(id, run_id));
     }
@@ -192,15 +194,16 @@ pub async fn versions(
     .bind(run_id)
     .bind(limit)
     .bind(offset)
-    .fetch_all(&db.pool)
+    .fetch_all(&mut *read)
     .await?;
     let total: i64 =
         sqlx::query("SELECT COUNT(*) FROM run_versions WHERE session_seq = $1 AND run_id = $2")
             .bind(seq)
             .bind(run_id)
-            .fetch_one(&db.pool)
+            .fetch_one(&mut *read)
             .await?
             .get(0);
+    read.commit().await?;
     if total == 0 {
         return Err(no_run(id, run_id));
     }

@@ -68,8 +68,11 @@ pub async fn create(
     Ok(())
 }
 
-/// A page of sessions, newest first.
+/// A page of sessions, newest first, and how many there are in all, both
+/// from one snapshot (two reads apart gave a page its total contradicted
+/// when a session was stored or deleted between them).
 pub async fn list(db: &Db, page: ListPage) -> Result<SessionList, StoreError> {
+    let mut read = db.begin_read().await?;
     // One more than the page: whether a next page exists.
     let mut rows = sqlx::query(
         "SELECT s.seq, s.id, s.name, s.machine, s.created_at,
@@ -79,12 +82,13 @@ pub async fn list(db: &Db, page: ListPage) -> Result<SessionList, StoreError> {
     .bind(page.before.unwrap_or(i64::MAX))
     .bind(page.limit + 1)
     .bind(page.offset)
-    .fetch_all(&db.pool)
+    .fetch_all(&mut *read)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM sessions")
-        .fetch_one(&db.pool)
+        .fetch_one(&mut *read)
         .await?
         .get(0);
+    read.commit().await?;
     let more = rows.len() as i64 > page.limit;
     rows.truncate(page.limit as usize);
     let next = more

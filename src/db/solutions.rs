@@ -107,14 +107,16 @@ pub async fn store(
     Ok(stored)
 }
 
-/// A page of a session's stored solutions, oldest first, and how many there are in all.
+/// A page of a session's stored solutions, oldest first, and how many there
+/// are in all, from one snapshot (as `sessions::list`).
 pub async fn list(
     db: &Db,
     id: &str,
     limit: i64,
     offset: i64,
 ) -> Result<(Vec<StoredSolution>, i64), StoreError> {
-    let seq = sessions::seq_of(&db.pool, db.engine, id).await?;
+    let mut read = db.begin_read().await?;
+    let seq = sessions::seq_of(&mut *read, db.engine, id).await?;
     let rows = sqlx::query(
         "SELECT seq, created_at, fieldbal_version, options, run_versions, solution
          FROM solutions WHERE session_seq = $1 ORDER BY seq LIMIT $2 OFFSET $3",
@@ -122,13 +124,14 @@ pub async fn list(
     .bind(seq)
     .bind(limit)
     .bind(offset)
-    .fetch_all(&db.pool)
+    .fetch_all(&mut *read)
     .await?;
     let total: i64 = sqlx::query("SELECT COUNT(*) FROM solutions WHERE session_seq = $1")
         .bind(seq)
-        .fetch_one(&db.pool)
+        .fetch_one(&mut *read)
         .await?
         .get(0);
+    read.commit().await?;
     let page = rows
         .iter()
         .map(|r| {

@@ -2,7 +2,8 @@
 //! machines and their coefficient versions (numbers never reused under an
 //! id), the strings and timestamps stored alike on both engines
 //! (`stored_text`), the OpenAPI document, runs of a
-//! stored session, what a job and its runs are (`records`), the `fieldbal serve` binary, service behaviour (request ids,
+//! stored session, what a job and its runs are (`records`), a page and its
+//! total from one snapshot (`pages`), the `fieldbal serve` binary, service behaviour (request ids,
 //! body limits, time limits) and sessions. `scripts/test.sh` runs this whole
 //! binary a second time with the server on PostgreSQL.
 
@@ -16,6 +17,7 @@ mod errors;
 mod machine_ids;
 mod machines;
 mod openapi;
+mod pages;
 mod records;
 mod runs;
 mod serve;

@@ -65,7 +65,9 @@ pub fn run_etag(version: i64) -> String {
 
 /// The versions `If-Match` accepts: `None` without the header or with `*`
 /// (any current version), else the run versions it names; a tag that names
-/// no version matches none.
+/// no version matches none. If-Match compares strongly (RFC 9110 §13.1.1),
+/// under which a weak tag (`W/"v3"`) matches nothing, and a tag matches
+/// only as the ETag was given, character for character.
 pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiError> {
     let Some(value) = headers.get(header::IF_MATCH) else {
         return Ok(None);
@@ -84,8 +86,10 @@ pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiErr
     Ok(Some(
         text.split(',')
             .filter_map(|t| {
-                let t = t.trim().trim_start_matches("W/");
-                t.strip_prefix("\"v")?.strip_suffix('"')?.parse().ok()
+                let t = t.trim();
+                let v = t.strip_prefix("\"v")?.strip_suffix('"')?.parse().ok()?;
+                // Character for character: `"v01"` and `"v+1"` are not `"v1"`.
+                (run_etag(v) == t).then_some(v)
             })
             .collect(),
     ))

@@ -137,3 +137,49 @@ async fn deleting_a_session_removes_it_with_its_runs_and_solutions() {
     assert_eq!(list["total"], 0);
     server.shutdown().await;
 }
+
+#[tokio::test]
+async fn if_match_compares_strongly_so_a_weak_tag_never_matches() {
+    let (_dir, server, client) = fresh_server().await;
+    let ex = example("pump-two-plane-exact.json");
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &ex["session"]).await;
+    let run_url = server.url(&format!(
+        "/api/v1/sessions/{}/runs/trial%20inboard",
+        created["id"].as_str().unwrap()
+    ));
+    let (status, headers, run) = send(client.get(&run_url)).await;
+    assert_eq!(status, 200);
+    let tag = headers["etag"].to_str().unwrap().to_string();
+    assert!(tag.starts_with('"'), "a strong tag: {tag}");
+    // RFC 9110 §13.1.1: If-Match uses the strong comparison, under which a
+    // weak tag matches nothing, not even the current version's (it was
+    // taken as that version). Alone or in a list: 412, nothing stored.
+    // Nor does a tag spelled otherwise than the ETag (`"v01"` for `"v1"`).
+    assert_eq!(tag, "\"v1\"");
+    for weak in [
+        format!("W/{tag}"),
+        format!("W/{tag}, \"v99\""),
+        "\"v01\"".into(),
+        "\"v+1\"".into(),
+    ] {
+        let (status, _, body) =
+            send(client.put(&run_url).header("If-Match", &weak).json(&run)).await;
+        assert_eq!(status, 412, "{weak}: {body}");
+        assert_eq!(body["error"]["code"], "precondition_failed", "{body}");
+        assert_eq!(body["error"]["field"], "If-Match", "{body}");
+    }
+    let (_, versions, _) = send(client.get(format!("{run_url}/versions"))).await;
+    assert_eq!(versions["x-total-count"], "1", "nothing was stored");
+    // The strong tag, alone or beside a weak one, still matches.
+    let (status, headers, body) = send(
+        client
+            .put(&run_url)
+            .header("If-Match", format!("W/\"v7\", {tag}"))
+            .json(&run),
+    )
+    .await;
+    assert_eq!(status, 200, "{body}");
+    let tag = headers["etag"].to_str().unwrap().to_string();
+    let (status, _, body) = send(client.put(&run_url).header("If-Match", &tag).json(&run)).await;
+    assert_eq!(status, 200, "{body}");
+}

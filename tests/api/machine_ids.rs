@@ -175,17 +175,39 @@ async fn versions_pooled_while_the_machine_is_deleted_and_created_again_never_re
 async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id() {
     let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/sessions");
-    // Too long, or empty: a machine id has 1 to 64 characters.
-    for bad in ["M".repeat(65), String::new()] {
-        let (status, _, err) = post(&client, &url, &job_session(&bad, 55)).await;
+    let solve = server.url("/api/v1/solve");
+    // Too long, empty or with a control character: a machine id has 1 to 64
+    // characters, none a control character. The solve refuses the session
+    // as the store does (it solved it).
+    for bad in [
+        "M".repeat(65),
+        String::new(),
+        "M\u{0}".into(),
+        "M\n1".into(),
+    ] {
+        let s = job_session(&bad, 55);
+        let (status, _, err) = post(&client, &url, &s).await;
         assert_eq!(status, 422, "{bad:?}: {err}");
         assert_eq!(err["error"]["field"], "machine", "{bad:?}: {err}");
+        let (status, _, err) = post(&client, &solve, &json!({"session": s})).await;
+        assert_eq!(status, 422, "solve {bad:?}: {err}");
+        assert_eq!(
+            err["error"]["code"], "invalid_value",
+            "solve {bad:?}: {err}"
+        );
+        assert_eq!(
+            err["error"]["field"], "session.machine",
+            "solve {bad:?}: {err}"
+        );
     }
     let (_, _, list) = send(client.get(&url)).await;
     assert_eq!(list["total"], 0, "nothing stored");
     let longest = "\u{e9}".repeat(64);
     let (status, _, body) = post(&client, &url, &job_session(&longest, 55)).await;
     assert_eq!(status, 201, "64 characters are an id: {body}");
+    let s = job_session(&longest, 55);
+    let (status, _, body) = post(&client, &solve, &json!({"session": s})).await;
+    assert_eq!(status, 200, "solved too: {body}");
 }
 
 #[tokio::test]

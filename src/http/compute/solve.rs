@@ -7,7 +7,7 @@ use axum::response::{IntoResponse, Response};
 use axum::Json;
 
 use crate::balancing::model::{Session, SolveOptions, SolveRequest};
-use crate::balancing::{self, InputError, Solution};
+use crate::balancing::{self, validate, InputError, Solution};
 use crate::db::idempotency;
 use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
@@ -71,6 +71,11 @@ pub async fn solve(
 ) -> Result<Json<Solution>, Refused> {
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
+    // The machine a session names is checked where a request defines it
+    // (`validate::check_machine_id`): here as when the session is stored.
+    if let Some(m) = &req.session.machine {
+        validate::check_machine_id(|| "session.machine".into(), m)?;
+    }
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
     let options =
         coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;

@@ -38,18 +38,9 @@ pub fn check_text(field: impl FnOnce() -> String, text: &str) -> Result<(), Inpu
 pub fn check_session(s: &Session) -> Result<(), InputError> {
     check_text(|| "name".into(), &s.name)?;
     if let Some(m) = &s.machine {
-        check_id(|| "machine".into(), m)?;
-        // The core allows any short text; a stored session's machine is
-        // looked up as a machine's id, which has 1 to 64 characters (an
-        // empty one named no machine, yet was stored as naming one).
-        let n = m.chars().count();
-        if n == 0 || n > 64 {
-            return Err(InputError::invalid(
-                "invalid_value",
-                "machine",
-                format!("a machine id has 1 to 64 characters; this one has {n}"),
-            ));
-        }
+        // Looked up as a machine's id: the core's rule for one (an empty
+        // one named no machine, yet was stored as naming one).
+        validate::check_machine_id(|| "machine".into(), m)?;
     }
     // The planes', sensors' and runs' ids and `trim.coefficients_from.machine`
     // are the core's ids: it checks them (with the same rule) when the

@@ -30,6 +30,23 @@ fn check_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> 
     check_id_chars(field, id)
 }
 
+/// A machine's id where a session names one (its `machine`, its
+/// `trim.coefficients_from.machine`): 1 to 64 characters, none a control
+/// character, as a machine's own id. The one rule for the store and the
+/// solve. `validate` applies it to the trim; a session's `machine` is
+/// checked where a request defines it (the store's posted session, the
+/// solve's), since a stored session may name one from before the rule.
+pub fn check_machine_id(field: impl FnOnce() -> String, id: &str) -> Result<(), InputError> {
+    let n = id.chars().count();
+    if n == 0 || n > 64 {
+        return Err(invalid(
+            field(),
+            format!("a machine id has 1 to 64 characters; this one has {n}"),
+        ));
+    }
+    check_id_chars(field, id)
+}
+
 /// The first character of `s` that `bad` refuses, with its position (from 1).
 fn first(s: &str, bad: impl Fn(char) -> bool) -> Option<(usize, char)> {
     s.chars()

@@ -2,7 +2,7 @@
 //! run's `purpose`: records for the client that reopens a job, stored and
 //! given back unchanged, so checked only for what would make them mean nothing.
 
-use super::fields::{check_angle, check_id_chars, check_positive, invalid};
+use super::fields::{check_angle, check_machine_id, check_positive, invalid};
 use super::{IdIndex, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Session, Trim};
@@ -16,14 +16,7 @@ pub(super) fn check_trim(
 ) -> Result<(), InputError> {
     match (&trim.coefficients_from, &trim.influence_coefficients) {
         (Some(from), None) => {
-            let n = from.machine.chars().count();
-            if n == 0 || n > 64 {
-                return Err(invalid(
-                    "trim.coefficients_from.machine",
-                    format!("a machine id of 1 to 64 characters; this one has {n}"),
-                ));
-            }
-            check_id_chars(|| "trim.coefficients_from.machine".into(), &from.machine)?;
+            check_machine_id(|| "trim.coefficients_from.machine".into(), &from.machine)?;
             if from.version.is_some_and(|v| v < 1) {
                 return Err(invalid(
                     "trim.coefficients_from.version",

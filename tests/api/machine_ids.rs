@@ -175,10 +175,10 @@ async fn versions_pooled_while_the_machine_is_deleted_and_created_again_never_re
 async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id() {
     let (_dir, server, client) = fresh_server().await;
     let url = server.url("/api/v1/sessions");
-    let solve = server.url("/api/v1/solve");
+    let stateless = ["/api/v1/solve", "/api/v1/trial-weights"].map(|p| server.url(p));
     // Too long, empty or with a control character: a machine id has 1 to 64
-    // characters, none a control character. The solve refuses the session
-    // as the store does (it solved it).
+    // characters, none a control character. The solve (and the trial
+    // weights) refuse the session as the store does (they answered it).
     for bad in [
         "M".repeat(65),
         String::new(),
@@ -189,16 +189,15 @@ async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id
         let (status, _, err) = post(&client, &url, &s).await;
         assert_eq!(status, 422, "{bad:?}: {err}");
         assert_eq!(err["error"]["field"], "machine", "{bad:?}: {err}");
-        let (status, _, err) = post(&client, &solve, &json!({"session": s})).await;
-        assert_eq!(status, 422, "solve {bad:?}: {err}");
-        assert_eq!(
-            err["error"]["code"], "invalid_value",
-            "solve {bad:?}: {err}"
-        );
-        assert_eq!(
-            err["error"]["field"], "session.machine",
-            "solve {bad:?}: {err}"
-        );
+        for u in &stateless {
+            let (status, _, err) = post(&client, u, &json!({"session": s})).await;
+            let got = (status, &err["error"]["code"], &err["error"]["field"]);
+            assert_eq!(
+                got,
+                (422, &json!("invalid_value"), &json!("session.machine")),
+                "{u} {bad:?}: {err}"
+            );
+        }
     }
     let (_, _, list) = send(client.get(&url)).await;
     assert_eq!(list["total"], 0, "nothing stored");
@@ -206,8 +205,10 @@ async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id
     let (status, _, body) = post(&client, &url, &job_session(&longest, 55)).await;
     assert_eq!(status, 201, "64 characters are an id: {body}");
     let s = job_session(&longest, 55);
-    let (status, _, body) = post(&client, &solve, &json!({"session": s})).await;
-    assert_eq!(status, 200, "solved too: {body}");
+    for u in &stateless {
+        let (status, _, body) = post(&client, u, &json!({"session": s})).await;
+        assert_eq!(status, 200, "{u} answers it too: {body}");
+    }
 }
 
 #[tokio::test]

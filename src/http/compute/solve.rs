@@ -28,6 +28,16 @@ pub(crate) fn within_solve_request(e: InputError) -> InputError {
     }
 }
 
+/// What the core leaves to the request that defines a session: the machine
+/// it names (`validate::check_machine_id`), refused by a stateless
+/// endpoint as when the session is stored, named within `{"session", ...}`.
+pub(crate) fn check_posted_session(session: &Session) -> Result<(), InputError> {
+    match &session.machine {
+        Some(m) => validate::check_machine_id(|| "session.machine".into(), m),
+        None => Ok(()),
+    }
+}
+
 /// Name a solver error's field within a posted options body; a fault in the
 /// stored session is not a field of the body (the message names it).
 fn within_options(mut e: InputError) -> InputError {
@@ -71,11 +81,7 @@ pub async fn solve(
 ) -> Result<Json<Solution>, Refused> {
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
-    // The machine a session names is checked where a request defines it
-    // (`validate::check_machine_id`): here as when the session is stored.
-    if let Some(m) = &req.session.machine {
-        validate::check_machine_id(|| "session.machine".into(), m)?;
-    }
+    check_posted_session(&req.session)?;
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
     let options =
         coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;

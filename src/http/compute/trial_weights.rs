@@ -12,7 +12,7 @@ use crate::balancing::model::Conventions;
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
 use crate::http::responses::{BodyRefused, MalformedJson, SolverBusy};
-use crate::http::solve::within_solve_request;
+use crate::http::solve::{check_posted_session, within_solve_request};
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -44,6 +44,7 @@ pub async fn trial_weights(
     State(state): State<AppState>,
     JsonBody(req): JsonBody<TrialRequest>,
 ) -> Result<Json<TrialAnswer>, Refused> {
+    check_posted_session(&req.session)?;
     // Stored coefficients (`coefficients_from`) are read here, as for a solve.
     let options =
         coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;

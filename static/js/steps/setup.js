@@ -177,7 +177,7 @@ export function renderSetup(root, next) {
       { class: "job" },
       h("legend", {}, "Job"),
       h("label", {}, h("span", {}, "Name"), textInput({ field: "name", value: setup.name, required: true, label: "Session name", placeholder: "e.g. ID fan 3, coupling end", disabled: locked, size: 32, onValue: (v) => (setup.name = v) })),
-      h("label", {}, h("span", {}, "Machine"), textInput({ field: "machine", value: setup.machine, label: "Machine", placeholder: "e.g. ID-FAN-3", disabled: locked, size: 20, onValue: (v) => (setup.machine = v) })),
+      h("label", {}, h("span", {}, "Machine"), textInput({ field: "machine", value: setup.machine, label: "Machine", placeholder: "e.g. ID-FAN-3", disabled: locked, size: 20, maxlength: 64, onValue: (v) => (setup.machine = v) })),
       h("label", {}, h("span", {}, "Speeds, rpm"), h("span", { class: "field" }, speeds, h("span", { class: "msg", role: "alert" }), h("span", { class: "hint rule" }, SPEEDS_RULE))),
       h("p", { class: "hint rule decimal-rule" }, DECIMAL_RULE),
     ),

@@ -31,10 +31,16 @@ fn turbulent_decay(step: f64, samples: usize) -> Vec<f64> {
 }
 
 fn fit(samples: &[f64], dt_s: f64, damping: DampingLaw) -> FreeDecay {
+    fit_with(samples, dt_s, damping, None)
+}
+
+/// As [`fit`], with the request's `offset` (known; absent, fitted).
+fn fit_with(samples: &[f64], dt_s: f64, damping: DampingLaw, offset: Option<f64>) -> FreeDecay {
     identify(&FreeDecayRequest {
         samples: samples.to_vec(),
         dt_s,
         damping,
+        offset,
     })
     .unwrap()
 }
@@ -61,36 +67,40 @@ fn err(got: f64, want: f64) -> f64 {
     (got - want).abs() / want
 }
 
+/// The paper's samples have no offset: given as known (`offset` 0), (7.2)
+/// is the paper's and keeps its accuracy, b/m under 2 %. Fitted, the offset
+/// costs accuracy on these 21 samples: at τ = 0.25 s (four samples a period)
+/// rounded to two decimals the rounding leaves a constant of −0.0014 (the
+/// fit without it explains the record worse, F = 14.5 against 4.5 at 95 %),
+/// and with it taken out b/m is 3.2 % off (1.5 % left in).
 #[test]
 fn the_papers_experiment_is_reproduced_and_beats_finite_differences_tenfold() {
-    for step in [0.2, 0.25] {
-        let exact = turbulent_decay(step, 21);
-        for decimals in [4, 3, 2] {
-            let y: Vec<f64> = exact.iter().map(|&v| round_to(v, decimals)).collect();
-            let got = fit(&y, step, DampingLaw::Turbulent);
-            let (ec, eb) = (err(got.c_over_m, C_M), err(got.b_over_m, B_M));
-            let (fc, fb) = finite_difference(&y, step);
-            let (fec, feb) = (err(fc, C_M), err(fb, B_M));
-            println!(
-                "τ = {step}, {decimals} decimals: c/m {:.5} ({:.4} %), b/m {:.6} ({:.2} %); finite differences {:.3} %, {:.1} %",
-                got.c_over_m, 100.0 * ec, got.b_over_m, 100.0 * eb, 100.0 * fec, 100.0 * feb
-            );
-            assert!(
-                ec < 0.001,
-                "τ = {step}, {decimals} decimals: c/m off by {:.4} %",
-                100.0 * ec
-            );
-            assert!(
-                eb < 0.02,
-                "τ = {step}, {decimals} decimals: b/m off by {:.3} %",
-                100.0 * eb
-            );
-            assert!(
-                fec > 10.0 * ec && feb > 10.0 * eb,
-                "finite differences not ten times worse: {fec} vs {ec}, {feb} vs {eb}"
-            );
-            assert!((got.decrement - 0.01).abs() < 0.02 * 0.01, "{got:?}");
-            assert!((got.amplitude - 1.0).abs() < 0.01, "{got:?}");
+    for (offset, b_bound) in [(Some(0.0), 0.02), (None, 0.035)] {
+        for step in [0.2, 0.25] {
+            let exact = turbulent_decay(step, 21);
+            for decimals in [4, 3, 2] {
+                let y: Vec<f64> = exact.iter().map(|&v| round_to(v, decimals)).collect();
+                let got = fit_with(&y, step, DampingLaw::Turbulent, offset);
+                let (ec, eb) = (err(got.c_over_m, C_M), err(got.b_over_m, B_M));
+                let (fc, fb) = finite_difference(&y, step);
+                let (fec, feb) = (err(fc, C_M), err(fb, B_M));
+                let what = format!("offset {offset:?}, τ = {step}, {decimals} decimals");
+                println!(
+                    "{what}: c/m {:.5} ({:.4} %), b/m {:.6} ({:.2} %); finite differences {:.3} %, {:.1} %",
+                    got.c_over_m, 100.0 * ec, got.b_over_m, 100.0 * eb, 100.0 * fec, 100.0 * feb
+                );
+                assert!(ec < 0.001, "{what}: c/m off by {:.4} %", 100.0 * ec);
+                assert!(eb < b_bound, "{what}: b/m off by {:.3} %", 100.0 * eb);
+                assert!(
+                    fec > 10.0 * ec && feb > 10.0 * eb,
+                    "{what}: finite differences not ten times worse: {fec} vs {ec}, {feb} vs {eb}"
+                );
+                assert!(
+                    (got.decrement - 0.01).abs() < b_bound * 0.01,
+                    "{what}: {got:?}"
+                );
+                assert!((got.amplitude - 1.0).abs() < 0.01, "{what}: {got:?}");
+            }
         }
     }
 }
@@ -143,6 +153,7 @@ fn noisy_errors(
             samples: y,
             dt_s: step,
             damping: law,
+            offset: None,
         }) {
             Ok(got) => {
                 sum.0 += err(got.c_over_m, truth.0);
@@ -324,6 +335,7 @@ fn an_oversampled_noisy_decay_is_identified_not_refused() {
             samples: y,
             dt_s: 1e-4,
             damping: DampingLaw::Viscous,
+            offset: None,
         })
         .unwrap_or_else(|e| panic!("noise {noise}: {e:?}"));
         let z = got.damping_ratio.unwrap();
@@ -358,6 +370,7 @@ fn a_noisy_turbulent_decay_is_identified_not_refused() {
             samples: y,
             dt_s: 0.05,
             damping: DampingLaw::Turbulent,
+            offset: None,
         })
         .unwrap_or_else(|e| panic!("seed {seed}: {e:?}"));
         worst = (
@@ -371,4 +384,117 @@ fn a_noisy_turbulent_decay_is_identified_not_refused() {
         100.0 * worst.1
     );
     assert!(worst.0 < 0.002 && worst.1 < 0.1, "{worst:?}");
+}
+
+/// A number of an answer, read by name as a client does.
+fn number(got: &FreeDecay, key: &str) -> f64 {
+    let v = serde_json::to_value(got).unwrap();
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no number {key}: {v}"))
+}
+
+/// A proximity probe's record sits on its gap voltage, an accelerometer's on
+/// its bias: an offset of 10 % of the amplitude moved the frequency 2.5 %
+/// and ζ 30 %, and a large one was refused (review, session 20). The offset
+/// is now fitted with the decay and answered (`offset`); a record and the
+/// same record shifted by 0, 10 %, 100 % and 10 times its amplitude give the
+/// same frequency and ζ, exact or with 1 % noise.
+#[test]
+fn an_offset_record_gives_the_frequency_and_damping_of_the_decay_and_its_offset() {
+    let (f0, zeta, tau) = (5.0, 0.02, 0.01);
+    for noise in [0.0, 0.01] {
+        for seed in 1..=5 {
+            let y = noisy_viscous(f0, zeta, tau, 200, noise, seed);
+            let plain = fit(&y, tau, DampingLaw::Viscous);
+            for offset in [0.0, 0.1, 1.0, 10.0] {
+                let shifted: Vec<f64> = y.iter().map(|v| v + offset).collect();
+                let got = fit(&shifted, tau, DampingLaw::Viscous);
+                let (f, z) = (got.frequency_hz, got.damping_ratio.unwrap());
+                let what = format!("noise {noise}, seed {seed}, offset {offset}: {got:?}");
+                // The shift moves neither: the same fit of the same decay.
+                assert!(err(f, plain.frequency_hz) < 1e-9, "{what}");
+                assert!(err(z, plain.damping_ratio.unwrap()) < 1e-6, "{what}");
+                assert!(
+                    (number(&got, "offset") - number(&plain, "offset") - offset).abs() < 1e-9,
+                    "{what}"
+                );
+                if noise == 0.0 {
+                    assert!(err(f, f0) < 1e-9 && err(z, zeta) < 1e-7, "{what}");
+                    assert!((number(&got, "offset") - offset).abs() < 1e-9, "{what}");
+                } else {
+                    assert!(err(f, f0) < 1e-3 && err(z, zeta) < 0.25, "{what}");
+                    assert!((number(&got, "offset") - offset).abs() < 0.01, "{what}");
+                }
+            }
+        }
+    }
+}
+
+/// The paper's oscillator, turbulent: its 21 samples at 0.2 s exact, and a
+/// decay of b/m = 0.05 over ten periods (200 samples at 0.05 s) with 1 %
+/// noise, each shifted by 0, 10 %, 100 % and 10 times the amplitude, give
+/// the same c/m and b/m, and the offset they were shifted by.
+#[test]
+fn an_offset_turbulent_decay_gives_the_same_coefficients_and_its_offset() {
+    let b_m = 0.05;
+    let long = rk4_samples(|y, v| -C_M * y - b_m * v * v.abs(), 1.0, 0.0, H, 500, 200);
+    let gauss = Normal::new(0.0, 1.0).unwrap();
+    let mut rng = StdRng::seed_from_u64(7);
+    let noisy: Vec<f64> = long
+        .iter()
+        .map(|&v| v + 0.01 * gauss.sample(&mut rng))
+        .collect();
+    for (y, step, truth, noise) in [
+        (turbulent_decay(0.2, 21), 0.2, B_M, 0.0),
+        (noisy, 0.05, b_m, 0.01),
+    ] {
+        let plain = fit(&y, step, DampingLaw::Turbulent);
+        for offset in [0.0, 0.1, 1.0, 10.0] {
+            let shifted: Vec<f64> = y.iter().map(|v| v + offset).collect();
+            let got = fit(&shifted, step, DampingLaw::Turbulent);
+            let what = format!("noise {noise}, offset {offset}: {got:?}");
+            println!(
+                "noise {noise}, offset {offset}: c/m {:.4} %, b/m {:.3} %, offset {:.2e}",
+                100.0 * err(got.c_over_m, C_M),
+                100.0 * err(got.b_over_m, truth),
+                number(&got, "offset") - offset
+            );
+            assert!(err(got.c_over_m, plain.c_over_m) < 1e-9, "{what}");
+            assert!(err(got.b_over_m, plain.b_over_m) < 1e-6, "{what}");
+            assert!(err(got.c_over_m, C_M) < 1e-3, "{what}");
+            assert!(err(got.b_over_m, truth) < 0.1, "{what}");
+            let tolerance = if noise == 0.0 { 1e-3 } else { 0.01 };
+            assert!(
+                (number(&got, "offset") - offset).abs() < tolerance,
+                "{what}"
+            );
+        }
+    }
+}
+
+/// An offset the client knows (`offset` in the request) is taken out, not
+/// fitted: the answer is the one for the samples less it, and names it.
+#[test]
+fn a_known_offset_is_taken_out_and_answered() {
+    let exact = turbulent_decay(0.2, 21);
+    let y: Vec<f64> = exact.iter().map(|&v| round_to(v, 2)).collect();
+    for law in [DampingLaw::Viscous, DampingLaw::Turbulent] {
+        let at_zero = fit_with(&y, 0.2, law, Some(0.0));
+        let shifted: Vec<f64> = y.iter().map(|v| v + 2.5).collect();
+        let got = fit_with(&shifted, 0.2, law, Some(2.5));
+        assert!(
+            err(got.b_over_m, at_zero.b_over_m) < 1e-9,
+            "{law:?}: {got:?}"
+        );
+        assert!(
+            err(got.c_over_m, at_zero.c_over_m) < 1e-12,
+            "{law:?}: {got:?}"
+        );
+        assert_eq!(number(&got, "offset"), 2.5, "{law:?}");
+        assert_eq!(number(&at_zero, "offset"), 0.0, "{law:?}");
+        // Fitted instead, the offset is the rounding's constant, not 0.
+        let fitted = fit(&y, 0.2, law);
+        assert!(number(&fitted, "offset") != 0.0, "{law:?}: {fitted:?}");
+    }
 }

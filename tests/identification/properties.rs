@@ -146,7 +146,7 @@ proptest! {
             })
             .collect();
         for samples in [decay, junk] {
-            let req = FreeDecayRequest { samples, dt_s, damping: law };
+            let req = FreeDecayRequest { samples, dt_s, damping: law, offset: None };
             match decay::identify(&req) {
                 Ok(d) => {
                     let all = [d.frequency_hz, d.c_over_m, d.b_over_m, d.decrement, d.amplitude, d.phase_deg, d.fit_rms];

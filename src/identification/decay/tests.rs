@@ -18,6 +18,7 @@ fn an_exact_viscous_decay_gives_back_its_parameters() {
         samples,
         dt_s: tau,
         damping: DampingLaw::Viscous,
+        offset: None,
     })
     .unwrap();
     assert!((got.c_over_m - w0 * w0).abs() < 1e-9 * w0 * w0);
@@ -32,6 +33,7 @@ fn request(samples: Vec<f64>, dt_s: f64, damping: DampingLaw) -> FreeDecayReques
         samples,
         dt_s,
         damping,
+        offset: None,
     }
 }
 

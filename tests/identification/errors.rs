@@ -181,6 +181,22 @@ async fn bad_input_is_refused_with_the_field_named() {
             422,
             "samples",
         ),
+        // Pure noise was answered as a decay (review, session 21).
+        (
+            "pure noise",
+            "free-decay",
+            with(free_decay_request(), |v| {
+                let mut state: u64 = 1;
+                v["samples"] = json!((0..200)
+                    .map(|_| {
+                        state = state.wrapping_mul(6364136223846793005).wrapping_add(1);
+                        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+                    })
+                    .collect::<Vec<f64>>())
+            }),
+            422,
+            "samples",
+        ),
         (
             "unknown law",
             "free-decay",

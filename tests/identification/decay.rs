@@ -398,8 +398,9 @@ fn number(got: &FreeDecay, key: &str) -> f64 {
 /// its bias: an offset of 10 % of the amplitude moved the frequency 2.5 %
 /// and ζ 30 %, and a large one was refused (review, session 20). The offset
 /// is now fitted with the decay and answered (`offset`); a record and the
-/// same record shifted by 0, 10 %, 100 % and 10 times its amplitude give the
-/// same frequency and ζ, exact or with 1 % noise.
+/// same record shifted by 0, 10 %, 100 %, 10 and 1000 times its amplitude
+/// (a probe's gap voltage is hundreds of times its vibration) give the same
+/// frequency and ζ, exact or with 1 % noise.
 #[test]
 fn an_offset_record_gives_the_frequency_and_damping_of_the_decay_and_its_offset() {
     let (f0, zeta, tau) = (5.0, 0.02, 0.01);
@@ -407,7 +408,7 @@ fn an_offset_record_gives_the_frequency_and_damping_of_the_decay_and_its_offset(
         for seed in 1..=5 {
             let y = noisy_viscous(f0, zeta, tau, 200, noise, seed);
             let plain = fit(&y, tau, DampingLaw::Viscous);
-            for offset in [0.0, 0.1, 1.0, 10.0] {
+            for offset in [0.0, 0.1, 1.0, 10.0, 1000.0] {
                 let shifted: Vec<f64> = y.iter().map(|v| v + offset).collect();
                 let got = fit(&shifted, tau, DampingLaw::Viscous);
                 let (f, z) = (got.frequency_hz, got.damping_ratio.unwrap());
@@ -433,8 +434,8 @@ fn an_offset_record_gives_the_frequency_and_damping_of_the_decay_and_its_offset(
 
 /// The paper's oscillator, turbulent: its 21 samples at 0.2 s exact, and a
 /// decay of b/m = 0.05 over ten periods (200 samples at 0.05 s) with 1 %
-/// noise, each shifted by 0, 10 %, 100 % and 10 times the amplitude, give
-/// the same c/m and b/m, and the offset they were shifted by.
+/// noise, each shifted by 0, 10 %, 100 %, 10 and 1000 times the amplitude,
+/// give the same c/m and b/m, and the offset they were shifted by.
 #[test]
 fn an_offset_turbulent_decay_gives_the_same_coefficients_and_its_offset() {
     let b_m = 0.05;
@@ -450,7 +451,7 @@ fn an_offset_turbulent_decay_gives_the_same_coefficients_and_its_offset() {
         (noisy, 0.05, b_m, 0.01),
     ] {
         let plain = fit(&y, step, DampingLaw::Turbulent);
-        for offset in [0.0, 0.1, 1.0, 10.0] {
+        for offset in [0.0, 0.1, 1.0, 10.0, 1000.0] {
             let shifted: Vec<f64> = y.iter().map(|v| v + offset).collect();
             let got = fit(&shifted, step, DampingLaw::Turbulent);
             let what = format!("noise {noise}, offset {offset}: {got:?}");

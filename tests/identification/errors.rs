@@ -181,6 +181,13 @@ async fn bad_input_is_refused_with_the_field_named() {
             422,
             "samples",
         ),
+        (
+            "offset too large",
+            "free-decay",
+            with(free_decay_request(), |v| v["offset"] = json!(1e13)),
+            422,
+            "offset",
+        ),
         // Pure noise was answered as a decay (review, session 21).
         (
             "pure noise",

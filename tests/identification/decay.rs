@@ -582,15 +582,35 @@ fn a_heavily_damped_decay_of_one_or_two_cycles_is_identified() {
 /// Sampled at fewer than two samples a period, a decay's samples are those
 /// of a slower one (its alias, `1/dt_s − f`, with the same decay a sample):
 /// nothing in them tells the two apart, and the answer is the alias, as
-/// docs/session-format.md says. Just above two samples a period, the
-/// frequency and damping are answered.
+/// docs/session-format.md says; it was given with no word of it. Near two
+/// samples a period the frequency and damping are answered, and any answer
+/// of fewer than three warns `few_samples_per_period`, naming the mode above
+/// the Nyquist frequency that would give the same samples.
 #[test]
-fn a_decay_sampled_near_or_below_twice_a_period_answers_what_the_samples_show() {
+fn a_decay_sampled_near_or_below_twice_a_period_answers_what_the_samples_show_and_warns() {
+    let warned = |got: &FreeDecay| {
+        let v = serde_json::to_value(got).unwrap();
+        let codes: Vec<&str> = v["warnings"]
+            .as_array()
+            .unwrap_or_else(|| panic!("no warnings: {v}"))
+            .iter()
+            .map(|w| w["code"].as_str().unwrap())
+            .collect();
+        match codes.as_slice() {
+            [] => None,
+            ["few_samples_per_period"] => {
+                Some(v["warnings"][0]["message"].as_str().unwrap().to_string())
+            }
+            _ => panic!("{codes:?}"),
+        }
+    };
     for (per_period, noise, seed) in [
         (2.2, 0.0, 0),
         (2.05, 0.0, 0),
         (2.2, 0.01, 1),
         (2.2, 0.01, 2),
+        (5.0, 0.0, 0),
+        (3.1, 0.01, 1),
     ] {
         let tau = 1.0 / (5.0 * per_period);
         let got = fit(
@@ -608,16 +628,25 @@ fn a_decay_sampled_near_or_below_twice_a_period_answers_what_the_samples_show() 
                 "{what}"
             );
         }
+        assert_eq!(warned(&got).is_some(), per_period < 3.0, "{what}");
     }
-    // 1.9 samples a period (9.5 Hz): the 4.5 Hz alias, the same n = ζω0.
+    // 1.9 samples a period (9.5 Hz): the 4.5 Hz alias, the same n = ζω0,
+    // and the warning names the 5 Hz mode that gives the same samples.
     let tau = 1.0 / 9.5;
     let got = fit(
         &noisy_viscous(5.0, 0.02, tau, 100, 0.0, 0),
         tau,
         DampingLaw::Viscous,
     );
-    let n = 0.02 * std::f64::consts::TAU * 5.0;
-    let alias_d = 9.5 - 5.0 * (1.0f64 - 0.02 * 0.02).sqrt();
-    assert!(err(got.damped_frequency_hz, alias_d) < 1e-9, "{got:?}");
-    assert!(err(got.b_over_m, 2.0 * n) < 1e-9, "{got:?}");
+    let fd = 5.0 * (1.0f64 - 0.02 * 0.02).sqrt();
+    assert!(err(got.damped_frequency_hz, 9.5 - fd) < 1e-9, "{got:?}");
+    assert!(
+        err(got.b_over_m, 2.0 * 0.02 * std::f64::consts::TAU * 5.0) < 1e-9,
+        "{got:?}"
+    );
+    let message = warned(&got).expect("warned");
+    assert!(
+        message.contains(&format!("a mode at {fd:.4} Hz")),
+        "{message}"
+    );
 }

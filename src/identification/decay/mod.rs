@@ -33,6 +33,7 @@ use super::ranges::{self, SAMPLE};
 use super::rotor::student::t_95;
 use crate::balancing::error::within;
 use crate::balancing::phasor::wrap_deg;
+use crate::balancing::solution::Warning;
 use crate::balancing::InputError;
 
 /// Fewest samples the contract accepts.
@@ -124,7 +125,17 @@ pub struct FreeDecay {
     /// constant gives the same frequency and damping; the request's `offset`
     /// where it gave one.
     pub offset: f64,
+    /// Conditions the technician should know about (as `/solve`'s):
+    /// `few_samples_per_period` (fewer than [`MIN_SAMPLES_PER_PERIOD`]).
+    #[serde(default)]
+    pub warnings: Vec<Warning>,
 }
+
+/// Samples a period of the fitted decay below which the answer warns
+/// (`few_samples_per_period`): near the Nyquist frequency the frequency and
+/// damping lose accuracy, and a mode just above it, which nothing in the
+/// samples tells apart, gives the same samples as one just below.
+pub const MIN_SAMPLES_PER_PERIOD: f64 = 3.0;
 
 fn check(req: &FreeDecayRequest) -> Result<(), InputError> {
     let n = req.samples.len();
@@ -228,6 +239,19 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
         ));
     }
     above_noise(&samples, &got, fit_offset)?;
+    let per_period = std::f64::consts::TAU / theta;
+    if per_period < MIN_SAMPLES_PER_PERIOD {
+        let rate = 1.0 / req.dt_s;
+        got.warnings.push(Warning {
+            code: "few_samples_per_period".into(),
+            message: format!(
+                "the decay has {per_period:.2} samples a period (sampled at {rate:.4} Hz): a mode at {:.4} Hz, above the Nyquist frequency {:.4} Hz, would give these same samples; sample at least four times a period of the highest mode, or filter above it",
+                rate - got.damped_frequency_hz,
+                rate / 2.0
+            ),
+            plane: None,
+        });
+    }
     Ok(got)
 }
 
@@ -477,6 +501,7 @@ fn viscous(y: &[f64], tau: f64, with_offset: bool) -> Result<Fitted, InputError>
         phase_deg,
         fit_rms,
         offset: offset + mean,
+        warnings: Vec::new(),
     };
     Ok((got, theta, growth))
 }
@@ -634,6 +659,7 @@ fn turbulent(y: &[f64], tau: f64, with_offset: bool) -> Result<Fitted, InputErro
         phase_deg,
         fit_rms,
         offset: offset + mean,
+        warnings: Vec::new(),
     };
     Ok((got, theta, 1.0 / (1.0 + l * (y.len() - 1) as f64)))
 }

@@ -155,22 +155,21 @@ fn identify_file(
     Ok(value.expect("answers serialise"))
 }
 
-/// Print an answer (exit 0) or the contract's error body (exit 2).
+/// Print an answer (exit 0) or the contract's error body (exit 2), as
+/// `fieldbal solve` does: a reader that has closed the pipe (`| head`) has
+/// what it wanted, so the command stops quietly (`println!` panicked there).
 fn print_result(result: Result<serde_json::Value, InputError>) -> ExitCode {
-    match result {
-        Ok(v) => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&v).expect("answer serialises")
-            );
-            ExitCode::SUCCESS
-        }
-        Err(err) => {
-            println!(
-                "{}",
-                serde_json::to_string_pretty(&err.to_json()).expect("error serialises")
-            );
-            ExitCode::from(2)
+    let (value, code) = match result {
+        Ok(v) => (v, ExitCode::SUCCESS),
+        Err(err) => (err.to_json(), ExitCode::from(2)),
+    };
+    let text = serde_json::to_vec_pretty(&value).expect("answers serialise");
+    match print_line(&text) {
+        Ok(()) => code,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => code,
+        Err(e) => {
+            eprintln!("fieldbal: cannot write the answer: {e}");
+            ExitCode::FAILURE
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The wire model at the edge: structs posted as positional arrays are
 //! refused naming the field; tiny amplitudes never give a non-number; and
-//! `fieldbal solve FILE | head` stops quietly when the pipe closes.
+//! `fieldbal solve FILE | head` (and every other file command) stops quietly
+//! when the pipe closes.
 
 use crate::common;
 
@@ -234,6 +235,74 @@ fn solve_piped_into_a_closed_reader_exits_quietly() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert_eq!(out.status.code(), Some(0), "{stderr}");
+}
+
+/// `residual`, `coefficients` and `identify` print their answers as `solve`
+/// does: a reader that closed the pipe (`| head`) is no crash. They printed
+/// with `println!`, which panicked (exit 101) on the closed pipe (session 21).
+#[test]
+fn every_file_command_piped_into_a_closed_reader_exits_quietly() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let dir = tempfile::tempdir().unwrap();
+    let model = dir.path().join("model.json");
+    std::fs::write(
+        &model,
+        json!({
+            "mass": {"fixed": [[2.0, 0.0], [0.0, 1.0]], "parameters": []},
+            "stiffness": {"fixed": [[0.0, 0.0], [0.0, 0.0]],
+                          "parameters": [[[1.0, 0.0], [0.0, 0.0]], [[1.0, -1.0], [-1.0, 1.0]]]},
+            "modes": [{"frequency_hz": 4.007338783024648, "shape": [0.5, 0.8]},
+                      {"frequency_hz": 7.7415840504266225, "shape": [0.4, -1.1]}]
+        })
+        .to_string(),
+    )
+    .unwrap();
+    let model = model.to_str().unwrap().to_string();
+    let cases: Vec<(&str, Vec<String>)> = vec![
+        (
+            "residual",
+            vec![
+                "residual".into(),
+                format!("{data}/residual/left-plane-12-positions.json"),
+            ],
+        ),
+        (
+            "coefficients",
+            vec![
+                "coefficients".into(),
+                format!("{data}/examples/pump-two-plane-exact.json"),
+            ],
+        ),
+        (
+            "identify model",
+            vec!["identify".into(), "model".into(), model],
+        ),
+        // An error body goes to the same closed pipe.
+        (
+            "residual error",
+            vec![
+                "residual".into(),
+                format!("{data}/examples/pump-two-plane-exact.json"),
+            ],
+        ),
+    ];
+    for (name, args) in cases {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+            .args(&args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+        assert!(
+            matches!(out.status.code(), Some(0) | Some(2)),
+            "{name}: {:?} {stderr}",
+            out.status
+        );
+    }
 }
 
 #[test]

@@ -167,6 +167,16 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
             ),
             field: Some(path),
         },
+        // Well-formed JSON with a list longer than the fixed length it is
+        // read into (a 2×2 `covariance` with three rows): serde_json calls
+        // the entry after the last it takes "trailing characters". Text after
+        // the document is checked with an empty path, so stays malformed.
+        Category::Syntax if message == "trailing characters" && !path.is_empty() => InputError {
+            kind: ErrorKind::Invalid,
+            code: "invalid_type",
+            message: "invalid length: more entries than this list takes".to_string(),
+            field: Some(path),
+        },
         Category::Syntax | Category::Eof | Category::Io => InputError {
             kind: ErrorKind::Malformed,
             code: "malformed_json",
@@ -302,6 +312,41 @@ mod tests {
         }
         let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();
         assert_eq!(err.code, "invalid_type");
+    }
+
+    /// A fixed-length list given too many entries (a coefficient's 2×2
+    /// `covariance` with three rows) is well-formed JSON of the wrong shape:
+    /// 422 naming the list, as one too short is. serde_json reports it as
+    /// "trailing characters", a syntax error, which was answered 400
+    /// `malformed_json` with no field (session 21).
+    #[test]
+    fn a_fixed_length_list_too_long_is_refused_naming_it() {
+        let coefficient = |cov: &str| {
+            format!(
+                r#"{{"influence_coefficients":[{{"speed_rpm":1000,"sensor":"s","plane":"A","amplitude_per_g":1,"phase_deg":0,"covariance":{cov}}}]}}"#
+            )
+        };
+        for (cov, field) in [
+            (
+                "[[1,0],[0,1],[0,0]]",
+                "influence_coefficients[0].covariance",
+            ),
+            ("[[1,0,0],[0,1]]", "influence_coefficients[0].covariance[0]"),
+            ("[[1,0]]", "influence_coefficients[0].covariance"),
+        ] {
+            let body = coefficient(cov);
+            let err = from_json::<crate::balancing::SolveOptions>(body.as_bytes()).unwrap_err();
+            assert_eq!(
+                (err.kind, err.code),
+                (ErrorKind::Invalid, "invalid_type"),
+                "{cov}: {err:?}"
+            );
+            assert_eq!(err.field.as_deref(), Some(field), "{cov}");
+        }
+        // Text after the whole document stays malformed.
+        let err = from_json::<crate::balancing::SolveOptions>(b"{} [1]").unwrap_err();
+        assert_eq!(err.code, "malformed_json");
+        assert_eq!(err.field, None);
     }
 
     #[test]

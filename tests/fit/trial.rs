@@ -221,3 +221,45 @@ fn a_plane_whose_coefficients_are_all_zero_is_sized_from_the_rotor_not_as_0_g() 
     assert_eq!((e.code, e.field.as_deref()), ("no_basis", Some("rotor")));
     assert!(e.message.contains("P1"), "{}", e.message);
 }
+
+/// A suggestion sized from the rotor is a finite number of grams at every
+/// accepted radius, rotor mass and speed; a radius or rotor mass too small to
+/// be a rotor's is refused naming it. A radius of 1e-310 mm (accepted, being
+/// above 0) answered `mass_g: null` (an infinite weight), 1e-100 mm 3.6e102 g
+/// (session 21); the smallest now accepted is the residual check's 1e-3 mm.
+#[test]
+fn a_trial_weight_from_the_rotor_is_finite_or_its_radius_or_mass_is_refused() {
+    for radius in [1e-310, 1e-100, 1e-4, 1e-3, 1.0, 1e5] {
+        for (mass_kg, speed) in [(1e-320, 1e6), (1e-4, 1e6), (1e-3, 1e6), (1e7, 1.0)] {
+            let (mut s, _, _) = session_value(9, true, false);
+            s["planes"][0]["radius_mm"] = json!(radius);
+            s["rotor"]["mass_kg"] = json!(mass_kg);
+            s["rotor"]["service_speed_rpm"] = json!(speed);
+            match run(&s) {
+                Ok(sugs) => {
+                    for sug in sugs {
+                        assert!(
+                            sug.mass_g.is_finite() && sug.mass_g > 0.0,
+                            "radius {radius:e} mm, {mass_kg:e} kg at {speed} rpm: {} g",
+                            sug.mass_g
+                        );
+                    }
+                }
+                Err(e) => {
+                    assert!(radius < 1e-3 || mass_kg < 1e-3, "{radius} {mass_kg}: {e:?}");
+                    // The rotor is checked before the planes.
+                    let field = if mass_kg < 1e-3 {
+                        "rotor.mass_kg"
+                    } else {
+                        "planes[0].radius_mm"
+                    };
+                    assert_eq!(
+                        (e.code, e.field.as_deref()),
+                        ("invalid_value", Some(field)),
+                        "{radius} {mass_kg}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -385,6 +385,27 @@ const CASES: &[(&str, Mutation, Stage, ErrorKind, &str)] = &[
         "rotor.service_speed_rpm",
     ),
     (
+        // 1e-320 kg gave a permissible unbalance of 2e-319 g·mm (session 21).
+        "rotor mass below a gram",
+        |s| {
+            s["rotor"] =
+                json!({"mass_kg": 1e-320, "service_speed_rpm": 1480, "balance_grade": "G6.3"});
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "rotor.mass_kg",
+    ),
+    (
+        // A trial weight sized from the rotor divides by it (session 21).
+        "radius below a micrometre",
+        |s| {
+            s["planes"][1]["radius_mm"] = json!(1e-310);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "planes[1].radius_mm",
+    ),
+    (
         "both trials in one plane",
         |s| {
             s["runs"][2]["weights"][0]["plane"] = json!("inboard");

@@ -9,7 +9,7 @@ use crate::balancing::model::Conventions;
 use crate::balancing::phasor::weight_angle_in;
 use crate::balancing::validate::{
     MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_MASS_G, MAX_RADIUS_MM, MAX_SPEED_RPM, MIN_AMPLITUDE,
-    MIN_MASS_G, MIN_SERVICE_SPEED_RPM,
+    MIN_MASS_G, MIN_RADIUS_MM, MIN_ROTOR_MASS_KG, MIN_SERVICE_SPEED_RPM,
 };
 
 /// Fewest distinct positions: the amplitude fit has 3 unknowns and needs one
@@ -44,11 +44,11 @@ pub struct Input {
 /// Speed, rpm: a rotor's service speed.
 const SPEED_RPM: (f64, f64) = (MIN_SERVICE_SPEED_RPM, MAX_SPEED_RPM);
 /// Journal load, kg.
-const JOURNAL_LOAD_KG: (f64, f64) = (1e-3, 1e7);
+const JOURNAL_LOAD_KG: (f64, f64) = (MIN_ROTOR_MASS_KG, 1e7);
 /// Trial mass, g (a session's weights).
 const TRIAL_MASS_G: (f64, f64) = (MIN_MASS_G, MAX_MASS_G);
 /// Trial radius, mm.
-const TRIAL_RADIUS_MM: (f64, f64) = (1e-3, MAX_RADIUS_MM);
+const TRIAL_RADIUS_MM: (f64, f64) = (MIN_RADIUS_MM, MAX_RADIUS_MM);
 /// Amplitudes other than 0 (a session's readings).
 const AMPLITUDE: (f64, f64) = (MIN_AMPLITUDE, MAX_AMPLITUDE);
 /// Smallest repeatability, percent or degrees: the misfits are divided by it.

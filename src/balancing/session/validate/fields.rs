@@ -11,6 +11,14 @@ use crate::balancing::error::{shown, InputError};
 use crate::balancing::model::{Rotor, Session};
 
 pub(crate) const MAX_RADIUS_MM: f64 = 1e5;
+/// Smallest plane radius, mm (the residual check's smallest trial radius):
+/// a trial weight sized from the rotor is inversely proportional to it, and
+/// 1e-310 mm gave an infinite one, answered as `null` (session 21).
+pub(crate) const MIN_RADIUS_MM: f64 = 1e-3;
+/// Lightest rotor, kg (the residual check's lightest journal load): below
+/// it the permissible unbalance and a trial weight sized from the rotor
+/// came out 0 g·mm and 0 g (1e-320 kg, session 21).
+pub(crate) const MIN_ROTOR_MASS_KG: f64 = 1e-3;
 /// Slowest service speed of a rotor, rpm.
 pub(crate) const MIN_SERVICE_SPEED_RPM: f64 = 1.0;
 const MAX_TEXT: usize = 200;
@@ -185,6 +193,22 @@ pub(super) fn unique_ids<'s>(
     Ok(seen)
 }
 
+/// `x` (already checked positive) is at least `min`, else a value error
+/// "`what` must be at least `min` `unit`, got `x`".
+fn at_least(field: &str, x: f64, min: f64, what: &str, unit: &str) -> Result<(), InputError> {
+    if x < min {
+        return Err(invalid(
+            field,
+            format!(
+                "{what} must be at least {} {unit}, got {}",
+                shown(min),
+                shown(x)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The rotor data of a session or a machine (ISO 21940-11 inputs).
 pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
     check_positive(
@@ -193,6 +217,13 @@ pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
         1e7,
         false,
         "the rotor mass",
+    )?;
+    at_least(
+        "rotor.mass_kg",
+        r.mass_kg,
+        MIN_ROTOR_MASS_KG,
+        "the rotor mass",
+        "kg",
     )?;
     check_positive(
         || "rotor.service_speed_rpm".into(),
@@ -203,15 +234,13 @@ pub fn check_rotor(r: &Rotor) -> Result<(), InputError> {
     )?;
     // The permissible unbalance 9549·G·m/n (method §5.2) was infinite for a
     // subnormal speed (fuzzing, session 15); no balanced rotor turns slower.
-    if r.service_speed_rpm < MIN_SERVICE_SPEED_RPM {
-        return Err(invalid(
-            "rotor.service_speed_rpm",
-            format!(
-                "the service speed must be at least {MIN_SERVICE_SPEED_RPM} rpm, got {}",
-                shown(r.service_speed_rpm)
-            ),
-        ));
-    }
+    at_least(
+        "rotor.service_speed_rpm",
+        r.service_speed_rpm,
+        MIN_SERVICE_SPEED_RPM,
+        "the service speed",
+        "rpm",
+    )?;
     if !GRADES.contains(&r.balance_grade.as_str()) {
         return Err(invalid(
             "rotor.balance_grade",
@@ -246,6 +275,13 @@ pub(super) fn check_setup(session: &Session) -> Result<(IdIndex<'_>, IdIndex<'_>
                 MAX_RADIUS_MM,
                 false,
                 "the radius",
+            )?;
+            at_least(
+                &format!("planes[{i}].radius_mm"),
+                r,
+                MIN_RADIUS_MM,
+                "the radius",
+                "mm",
             )?;
         }
         if let Some(n) = p.positions {

@@ -111,6 +111,9 @@ fn cases() -> Vec<Case> {
         c("stored solve with unknown option", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"bogus": 1})), 400, "unknown_field", Some("bogus")),
         c("stored solve with an unknown sensor option", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"sensors": ["DE-H", "XX"]})), 422, "unknown_sensor", Some("sensors[1]")),
         c("stored solve with a negative mass limit", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Json(json!({"max_mass_g": {"inboard": -5}})), 422, "invalid_value", Some("max_mass_g.inboard")),
+        // serde's map kept the last of a key given twice: a bound of 1 g then 1000 g solved unbounded (session 21).
+        c("solve with a mass limit given twice for one plane", "POST", "/api/v1/solve", JSON, Body::Raw(format!(r#"{{"session": {}, "options": {{"max_mass_g": {{"inboard": 1, "inboard": 1000}}}}}}"#, session()).into_bytes()), 422, "invalid_type", Some("options.max_mass_g.inboard")),
+        c("stored solve with a mass limit given twice for one plane", "POST", "/api/v1/sessions/{id}/solutions", JSON, Body::Raw(br#"{"max_mass_g": {"outboard": 5, "inboard": 1, "inboard": 1}}"#.to_vec()), 422, "invalid_type", Some("max_mass_g.inboard")),
         c("solve with a mass limit on an unknown plane", "POST", "/api/v1/solve", JSON, Body::Json(json!({"session": session(), "options": {"max_mass_g": {"middle": 5}}})), 422, "unknown_plane", Some("options.max_mass_g.middle")),
         c("list with limit 0", "GET", "/api/v1/sessions?limit=0", None, Body::None, 422, "out_of_range", Some("limit")),
         c("list with a word for limit", "GET", "/api/v1/sessions?limit=many", None, Body::None, 400, "invalid_query", Some("limit")),

@@ -326,7 +326,11 @@ pub struct SolveOptions {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub row_weights: Option<Vec<RowWeight>>,
     /// Upper bound on the correction mass per plane id, grams.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "crate::balancing::wire::unique_keys"
+    )]
     pub max_mass_g: Option<BTreeMap<String, f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drop_dependent_planes: Option<bool>,

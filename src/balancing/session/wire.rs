@@ -36,3 +36,49 @@ macro_rules! objects_only {
     )*};
 }
 pub(crate) use objects_only;
+
+/// An optional JSON object read into a map whose every key appears once
+/// (`max_mass_g`), for `#[serde(default, deserialize_with = "...")]`.
+/// serde's own map keeps the last of a key given twice, so
+/// `{"A": 1, "A": 1000}` solved with a bound of 1000 g, while a struct's key
+/// given twice is refused (session 21); the error names the key as a
+/// struct's does ("duplicate field", 422 naming `<map>.<key>`).
+pub(crate) fn unique_keys<'de, D, V>(
+    d: D,
+) -> Result<Option<std::collections::BTreeMap<String, V>>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    V: serde::Deserialize<'de>,
+{
+    use serde::de::{Error, MapAccess, Visitor};
+    use std::collections::BTreeMap;
+    use std::marker::PhantomData;
+
+    struct Unique<V>(BTreeMap<String, V>);
+    impl<'de, V: serde::Deserialize<'de>> serde::Deserialize<'de> for Unique<V> {
+        fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            struct Visit<V>(PhantomData<V>);
+            impl<'de, V: serde::Deserialize<'de>> Visitor<'de> for Visit<V> {
+                type Value = Unique<V>;
+                fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                    f.write_str("a map")
+                }
+                fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Unique<V>, A::Error> {
+                    let mut out = BTreeMap::new();
+                    while let Some(key) = map.next_key::<String>()? {
+                        let value = map.next_value::<V>()?;
+                        if out.contains_key(&key) {
+                            return Err(A::Error::custom(format!(
+                                "duplicate field `{key}`: each key is given once"
+                            )));
+                        }
+                        out.insert(key, value);
+                    }
+                    Ok(Unique(out))
+                }
+            }
+            d.deserialize_map(Visit(PhantomData))
+        }
+    }
+    Ok(<Option<Unique<V>> as serde::Deserialize>::deserialize(d)?.map(|u| u.0))
+}

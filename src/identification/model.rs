@@ -17,7 +17,7 @@ use utoipa::ToSchema;
 
 use super::lsq::finite;
 use super::ranges::{self, FREQUENCY_HZ, INITIAL, MASS, SHAPE, STIFFNESS, WEIGHT};
-use crate::balancing::error::within;
+use crate::balancing::error::{shown, within};
 use crate::balancing::InputError;
 
 /// Largest model accepted (degrees of freedom).
@@ -145,8 +145,8 @@ fn matrix(field: &str, rows: &[Vec<f64>], n: Option<usize>) -> Result<DMatrix<f6
                     format!("{field}[{i}][{j}]"),
                     format!(
                         "the matrix must be symmetric: [{i}][{j}] = {} but [{j}][{i}] = {}",
-                        a[(i, j)],
-                        a[(j, i)]
+                        shown(a[(i, j)]),
+                        shown(a[(j, i)])
                     ),
                 ));
             }

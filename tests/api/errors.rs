@@ -231,3 +231,105 @@ async fn a_stored_session_that_cannot_be_solved_yet_gets_422_and_no_solution_is_
     assert_eq!(solutions, json!([]));
     server.shutdown().await;
 }
+
+/// A number far from 1 in an error message is written in exponent form, as
+/// `shown` writes it: these messages printed 1e-320 as "0.000…0001" with 320
+/// digits and 1e308 with 309 (session 21), a screenful in the form's error
+/// line.
+#[tokio::test]
+async fn error_messages_write_extreme_numbers_in_exponent_form() {
+    let (_dir, server, client) = fresh_server().await;
+    let solve = |s: Value, options: Value| json!({"session": s, "options": options});
+    let mut ref_speed = session();
+    ref_speed["runs"][0]["readings"][0]["speed_rpm"] = json!(1e-320);
+    let mut trial_mass = session();
+    trial_mass["runs"][1]["weights"][0]["mass_g"] = json!(1e-320);
+    let mut only_reference = session();
+    only_reference["runs"] = json!([run(0)]);
+    for r in only_reference["runs"][0]["readings"]
+        .as_array_mut()
+        .unwrap()
+    {
+        r["speed_rpm"] = json!(1e-320);
+    }
+    let coefficients: Vec<Value> = ["DE-H", "DE-V", "NDE-H", "NDE-V"]
+        .iter()
+        .flat_map(|s| {
+            ["inboard", "outboard"].map(|p| json!({"speed_rpm": 2950, "sensor": s, "plane": p, "amplitude_per_g": 1, "phase_deg": 0}))
+        })
+        .collect();
+    let mut places = session();
+    places["planes"][0]["places_deg"] = json!([0, 1e-320, 90]);
+    let model = json!({
+        "mass": {"fixed": [[2.0, 1e308], [0.0, 1.0]], "parameters": []},
+        "stiffness": {"fixed": [[0.0, 0.0], [0.0, 0.0]], "parameters": [[[1.0, 0.0], [0.0, 0.0]]]},
+        "modes": [{"frequency_hz": 4.0, "shape": [0.5, 0.8]}]
+    });
+    let mut residual: Value = serde_json::from_slice(
+        &std::fs::read(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/data/residual/left-plane-12-positions.json"
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    residual["readings"][1]["angle_deg"] = json!(1e-320);
+    let cases = [
+        (
+            "reference speed",
+            "/api/v1/solve",
+            solve(ref_speed, json!({})),
+            "1e-320",
+        ),
+        (
+            "trial mass",
+            "/api/v1/solve",
+            solve(trial_mass, json!({})),
+            "1e-320",
+        ),
+        (
+            "row weight speed",
+            "/api/v1/solve",
+            solve(
+                session(),
+                json!({"row_weights": [{"speed_rpm": 1e300, "weight": 2}]}),
+            ),
+            "1e300",
+        ),
+        (
+            "missing coefficient",
+            "/api/v1/solve",
+            solve(
+                only_reference,
+                json!({"influence_coefficients": coefficients}),
+            ),
+            "1e-320",
+        ),
+        (
+            "place angle",
+            "/api/v1/solve",
+            solve(places, json!({})),
+            "1e-320",
+        ),
+        ("model matrix", "/api/v1/identify/model", model, "1e308"),
+        (
+            "residual position",
+            "/api/v1/residual-unbalance",
+            residual,
+            "1e-320",
+        ),
+    ];
+    for (name, path, body, number) in cases {
+        let (status, _, answer) = post(&client, &server.url(path), &body).await;
+        assert_eq!(status, 422, "{name}: {answer}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        let longest = message
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max()
+            .unwrap_or(0);
+        assert!(longest < 20, "{name}: {message}");
+        assert!(message.contains(number), "{name}: {message}");
+    }
+    server.shutdown().await;
+}

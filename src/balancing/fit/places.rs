@@ -64,7 +64,10 @@ pub fn check_plane(i: usize, plane: &Plane) -> Result<(), InputError> {
                 return Err(InputError::invalid(
                     "duplicate_place",
                     format!("planes[{i}].places_deg[{k}]"),
-                    format!("place {k} is at the same angle as place {j} ({a}°)"),
+                    format!(
+                        "place {k} is at the same angle as place {j} ({}°)",
+                        crate::balancing::error::shown(a)
+                    ),
                 ));
             }
         }

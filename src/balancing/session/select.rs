@@ -67,7 +67,10 @@ fn speed_point(checked: &Checked, field: String, speed: f64) -> Result<usize, In
         InputError::invalid(
             "unknown_speed",
             field,
-            format!("the reference run has no readings within 1 % of {speed} rpm"),
+            format!(
+                "the reference run has no readings within 1 % of {} rpm",
+                crate::balancing::error::shown(speed)
+            ),
         )
     })
 }

@@ -4,7 +4,7 @@
 
 use super::{MIN_POSITIONS, SPACING_TOL_DEG};
 use crate::balancing::acceptance::ResidualRequest;
-use crate::balancing::error::InputError;
+use crate::balancing::error::{shown, InputError};
 use crate::balancing::phasor::{angle_diff_deg, wrap_deg};
 
 /// The number of distinct, equally spaced positions; the last reading may
@@ -46,13 +46,15 @@ pub(super) fn spacing(req: &ResidualRequest) -> Result<usize, InputError> {
     let a = angles[k];
     let what = match repeats {
         Some(i) => format!(
-            "{a}° repeats the position of readings[{i}] ({}°)",
-            angles[i]
+            "{}° repeats the position of readings[{i}] ({}°)",
+            shown(a),
+            shown(angles[i])
         ),
         None => format!(
-            "{} of them fit that spacing from {}° (readings[{origin}]), {a}° is not on it",
+            "{} of them fit that spacing from {}° (readings[{origin}]), {}° is not on it",
             n - faults.iter().filter(|f| f.1.is_none()).count(),
-            angles[origin]
+            shown(angles[origin]),
+            shown(a)
         ),
     };
     let others: Vec<String> = faults[1..]

@@ -180,7 +180,7 @@ pub fn resolve(checked: &Checked, options: &SolveOptions) -> Result<Option<Suppl
                 FIELD,
                 format!(
                     "no influence coefficient of sensor '{}' at {} rpm for plane '{}': give one for every sensor and speed of the reference run and every plane solved for",
-                    session.sensors[row.sensor].id, row.speed_rpm, session.planes[j].id
+                    session.sensors[row.sensor].id, crate::balancing::error::shown(row.speed_rpm), session.planes[j].id
                 ),
             ));
         }

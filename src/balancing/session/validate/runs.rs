@@ -127,7 +127,7 @@ pub(super) fn check_runs(
                 return Err(InputError::invalid(
                     "invalid_value",
                     format!("{}.mass_g", f()),
-                    format!("the trial mass {} g is below {MIN_MASS_G} g, lighter than any balancing weight: give the mass in grams", w.mass_g),
+                    format!("the trial mass {} g is below {MIN_MASS_G} g, lighter than any balancing weight: give the mass in grams", crate::balancing::error::shown(w.mass_g)),
                 ));
             }
             check_angle(|| format!("{}.angle_deg", f()), w.angle_deg)?;

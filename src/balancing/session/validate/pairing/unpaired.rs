@@ -4,7 +4,7 @@
 //! which the reference run read that sensor (session 16).
 
 use super::super::Row;
-use crate::balancing::error::InputError;
+use crate::balancing::error::{shown, InputError};
 use crate::balancing::model::Session;
 
 /// What the reference run read of `sensor` nearest to `speed`, for a reading
@@ -26,8 +26,10 @@ pub(super) fn reference_read(
         .min_by(|&a, &b| rel(a).total_cmp(&rel(b)));
     match nearest {
         Some(m) => format!(
-            "; it read sensor '{sensor}' at {m} rpm, {:.1} % from {speed} rpm, and readings pair only within 1 %: correct this reading's speed (or the reference run's)",
-            100.0 * rel(m)
+            "; it read sensor '{sensor}' at {} rpm, {:.1} % from {} rpm, and readings pair only within 1 %: correct this reading's speed (or the reference run's)",
+            shown(m),
+            100.0 * rel(m),
+            shown(speed)
         ),
         None => String::new(),
     }
@@ -64,7 +66,7 @@ pub(super) fn missing(
             format!("runs[{i}].readings[{j}].speed_rpm"),
             format!(
                 "run '{}' read sensor '{}' at {} rpm, where the reference run has no reading of it to pair with{read}",
-                session.runs[i].id, r.sensor, r.speed_rpm
+                session.runs[i].id, r.sensor, shown(r.speed_rpm)
             ),
         );
     }
@@ -73,7 +75,9 @@ pub(super) fn missing(
         format!("runs[{i}].readings"),
         format!(
             "run '{}' has no reading of sensor '{}' at {} rpm, which the reference run has",
-            session.runs[i].id, session.sensors[row.sensor].id, row.speed_rpm
+            session.runs[i].id,
+            session.sensors[row.sensor].id,
+            shown(row.speed_rpm)
         ),
     )
 }

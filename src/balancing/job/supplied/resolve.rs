@@ -82,6 +82,15 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
     let Some(m) = c.covariance else {
         return Ok(None);
     };
+    check_covariance(|| f("covariance"), m).map(Some)
+}
+
+/// A coefficient's covariance (the option's, or a trim job's record of it):
+/// symmetric, positive semi-definite, finite and at most 1e30 (unit/g)².
+pub(crate) fn check_covariance(
+    field: impl FnOnce() -> String,
+    m: [[f64; 2]; 2],
+) -> Result<Matrix2<f64>, InputError> {
     let m = Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
     let finite = m.iter().all(|x| x.is_finite() && x.abs() <= MAX_COVARIANCE);
     let sym = (m[(0, 1)] - m[(1, 0)]).abs() <= 1e-9 * (m[(0, 0)].abs() + m[(1, 1)].abs());
@@ -90,11 +99,32 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
         && m.determinant() >= -1e-9 * (m[(0, 0)] * m[(1, 1)]).max(f64::MIN_POSITIVE);
     if !(finite && sym && psd) {
         return Err(bad(
-            f("covariance"),
+            field(),
             "a covariance is a symmetric positive semi-definite 2×2 matrix of finite numbers, each at most 1e30 (unit/g)²",
         ));
     }
-    Ok(Some(m))
+    Ok(m)
+}
+
+/// A coefficient's `unit` other than its sensor's: `unit_mismatch` at `field`.
+pub(crate) fn check_unit(
+    field: impl FnOnce() -> String,
+    given: Option<Unit>,
+    sensor: &str,
+    unit: Unit,
+) -> Result<(), InputError> {
+    match given.filter(|&u| u != unit) {
+        Some(u) => Err(InputError::invalid(
+            "unit_mismatch",
+            field(),
+            format!(
+                "the coefficient is in {} per gram but the session reads sensor '{sensor}' in {}",
+                unit_name(u),
+                unit_name(unit)
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The supplied coefficients on `checked`'s rows, or `None` without the
@@ -120,18 +150,12 @@ pub fn resolve(checked: &Checked, options: &SolveOptions) -> Result<Option<Suppl
                 format!("the session has no sensor '{}'", c.sensor),
             ));
         };
-        if let Some(unit) = c.unit.filter(|&u| u != session.sensors[s].unit) {
-            return Err(InputError::invalid(
-                "unit_mismatch",
-                format!("{FIELD}[{i}].unit"),
-                format!(
-                    "the coefficient is in {} per gram but the session reads sensor '{}' in {}",
-                    unit_name(unit),
-                    c.sensor,
-                    unit_name(session.sensors[s].unit)
-                ),
-            ));
-        }
+        check_unit(
+            || format!("{FIELD}[{i}].unit"),
+            c.unit,
+            &c.sensor,
+            session.sensors[s].unit,
+        )?;
         let Some(j) = session.planes.iter().position(|pl| pl.id == c.plane) else {
             return Err(InputError::invalid(
                 "unknown_plane",

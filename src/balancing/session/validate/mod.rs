@@ -129,7 +129,7 @@ pub fn check(session: &Session) -> Result<Checked<'_>, InputError> {
     let conventions = session.conventions.unwrap_or_default();
     let (planes, sensors) = fields::check_setup(session)?;
     if let Some(t) = &session.trim {
-        trim::check_trim(t, &planes, &sensors)?;
+        trim::check_trim(session, t, &planes, &sensors)?;
     }
     // Runout vectors (v2), subtracted from the readings when pairing.
     let runout = crate::balancing::job::runout::vectors(session, conventions)?;

@@ -5,11 +5,13 @@
 use super::fields::{check_angle, check_machine_id, check_positive, invalid};
 use super::{IdIndex, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
 use crate::balancing::error::InputError;
+use crate::balancing::job::supplied::{check_covariance, check_unit};
 use crate::balancing::model::{Session, Trim};
 
 /// Exactly one source of coefficients, naming a machine or listing known
 /// planes' and sensors' coefficients.
 pub(super) fn check_trim(
+    session: &Session,
     trim: &Trim,
     planes: &IdIndex<'_>,
     sensors: &IdIndex<'_>,
@@ -40,12 +42,15 @@ pub(super) fn check_trim(
                         format!("no plane has the id '{}'", c.plane),
                     ));
                 }
-                if !sensors.contains_key(c.sensor.as_str()) {
+                let Some(&s) = sensors.get(c.sensor.as_str()) else {
                     return Err(invalid(
                         f("sensor"),
                         format!("no sensor has the id '{}'", c.sensor),
                     ));
-                }
+                };
+                // What the solve option refuses is not stored: a client
+                // sends these back as that option (session 21).
+                check_unit(|| f("unit"), c.unit, &c.sensor, session.sensors[s].unit)?;
                 check_positive(
                     || f("speed_rpm"),
                     c.speed_rpm,
@@ -67,6 +72,9 @@ pub(super) fn check_trim(
                     ));
                 }
                 check_angle(|| f("phase_deg"), c.phase_deg)?;
+                if let Some(m) = c.covariance {
+                    check_covariance(|| f("covariance"), m)?;
+                }
             }
             Ok(())
         }

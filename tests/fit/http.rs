@@ -163,6 +163,14 @@ async fn bad_places_kits_and_fit_options_are_named_by_field() {
             "session.planes[0].kit.masses_g[1]",
         ),
         (
+            // Suggested as a 1e-320 g trial weight and fitted (session 21).
+            "a weight size lighter than any balancing weight",
+            |s| s["planes"][0]["kit"]["masses_g"][0] = json!(1e-320),
+            json!({}),
+            422,
+            "session.planes[0].kit.masses_g[0]",
+        ),
+        (
             "no weight sizes",
             |s| s["planes"][0]["kit"]["masses_g"] = json!([]),
             json!({}),

@@ -3,6 +3,7 @@
 
 use crate::balancing::error::InputError;
 use crate::balancing::model::Plane;
+use crate::balancing::validate::MIN_MASS_G;
 
 /// Most distinct weight sizes in one kit.
 pub const MAX_KIT_SIZES: usize = 12;
@@ -92,10 +93,12 @@ pub fn check_plane(i: usize, plane: &Plane) -> Result<(), InputError> {
         ));
     }
     for (k, &m) in kit.masses_g.iter().enumerate() {
-        if !(m.is_finite() && m > 0.0 && m <= MAX_KIT_MASS_G) {
+        // From the lightest trial weight a session takes (1e-6 g): a kit of
+        // 1e-320 g was suggested as the trial weight and fitted (session 21).
+        if !(m.is_finite() && (MIN_MASS_G..=MAX_KIT_MASS_G).contains(&m)) {
             return Err(invalid(
                 format!("planes[{i}].kit.masses_g[{k}]"),
-                format!("a weight size is a finite number of grams above 0 and at most {MAX_KIT_MASS_G}, got {}", crate::balancing::error::shown(m)),
+                format!("a weight size is a finite number of grams from {MIN_MASS_G} to {MAX_KIT_MASS_G}, got {}", crate::balancing::error::shown(m)),
             ));
         }
     }

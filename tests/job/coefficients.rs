@@ -353,6 +353,35 @@ fn pooled_coefficients_below_what_readings_resolve_are_zero_and_solve_again() {
     fieldbal::balancing::solve(&s, &options).expect("the pooled coefficients solve");
 }
 
+/// A plane whose trial moved no reading pools into coefficients that are 0
+/// at every sensor and speed: stored as a version, every solve with it warns
+/// `plane_undetermined` and every trial-weight sizing refuses it. The pool
+/// says so where the version is made (it said nothing, session 21); the
+/// plane that moved the readings is not named.
+#[test]
+fn a_plane_whose_trial_moved_no_reading_is_named_in_the_pool_warnings() {
+    let reading = |sensor: &str, amplitude: f64, phase: f64| json!({"speed_rpm": 1480, "sensor": sensor, "amplitude": amplitude, "phase_deg": phase});
+    let zero = vec![reading("1H", 88.0, 47.0), reading("2H", 61.5, 301.0)];
+    let s = parsed(&json!({
+        "name": "still", "machine": "M",
+        "planes": [{"id": "A"}, {"id": "B"}],
+        "sensors": [{"id": "1H", "unit": "um_pp"}, {"id": "2H", "unit": "um_pp"}],
+        "runs": [
+            {"id": "zero", "weights": [], "readings": zero},
+            {"id": "trial A", "weights": [{"plane": "A", "mass_g": 40, "angle_deg": 0}], "readings": zero},
+            {"id": "trial B", "weights": [{"plane": "B", "mass_g": 40, "angle_deg": 90}],
+             "readings": [reading("1H", 120.0, 80.0), reading("2H", 40.0, 250.0)]}
+        ]
+    }));
+    let pooled = pool(&[("s1".to_string(), s)], &PoolOptions::default()).expect("pools");
+    let named: Vec<(&str, Option<&str>)> = pooled
+        .warnings
+        .iter()
+        .map(|w| (w.code.as_str(), w.plane.as_deref()))
+        .collect();
+    assert_eq!(named, vec![("plane_undetermined", Some("A"))], "{named:?}");
+}
+
 #[test]
 fn sessions_that_read_a_sensor_in_different_units_are_not_pooled() {
     // The same sensor id in µm pk-pk in one session and in mils in another:

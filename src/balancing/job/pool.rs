@@ -298,6 +298,21 @@ pub fn pool_checked(
             });
         }
     }
+    // A plane whose trials moved no reading pools into zeros: every solve
+    // with this version would warn plane_undetermined and every trial-weight
+    // sizing refuse it, so say so where the version is made (session 21).
+    for plane in &plane_ids {
+        let mut its = coefficients.iter().filter(|c| &c.plane == plane);
+        if its.all(|c| c.amplitude_per_g == 0.0) {
+            warnings.push(Warning {
+                code: "plane_undetermined".into(),
+                message: format!(
+                    "the pooled trial runs in plane {plane} changed no reading: its coefficients are 0 at every sensor and speed, so a solve with them cannot correct in {plane}. Pool a session whose trial in {plane} moved the vibration (a heavier weight, or at a larger radius)"
+                ),
+                plane: Some(plane.clone()),
+            });
+        }
+    }
     Ok(Pooled {
         conventions: conv,
         sessions: used.iter().map(|&s| names[s].to_string()).collect(),

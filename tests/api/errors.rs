@@ -105,6 +105,8 @@ fn cases() -> Vec<Case> {
         c("appended second reference run", "POST", "/api/v1/sessions/{id}/runs", JSON, Body::Json({ let mut r = run(0); r["id"] = json!("zero again"); r }), 422, "second_reference_run", Some("weights")),
         c("appended run with unknown field", "POST", "/api/v1/sessions/{id}/runs", JSON, Body::Json({ let mut r = run(1); r["id"] = json!("new"); r["weights"][0]["angle"] = json!(3); r }), 400, "unknown_field", Some("weights[0].angle")),
         c("corrected run with another id", "PUT", "/api/v1/sessions/{id}/runs/{run}", JSON, Body::Json(run(2)), 422, "id_mismatch", Some("id")),
+        // The weights of the body are at fault: the service named no field (session 21).
+        c("corrected reference run given weights", "PUT", "/api/v1/sessions/{id}/runs/zero", JSON, Body::Json({ let mut r = run(0); r["weights"] = json!([{"plane": "inboard", "mass_g": 5, "angle_deg": 0}]); r }), 422, "no_reference_run", Some("weights")),
         c("corrected run with negative mass", "PUT", "/api/v1/sessions/{id}/runs/{run}", JSON, Body::Json({ let mut r = run(1); r["weights"][0]["mass_g"] = json!(-1); r }), 422, "invalid_value", Some("weights[0].mass_g")),
         // Solve requests and options.
         c("solve without session", "POST", "/api/v1/solve", JSON, Body::Json(json!({"options": {}})), 422, "missing_field", Some("session")),
@@ -336,5 +338,26 @@ async fn error_messages_write_extreme_numbers_in_exponent_form() {
         assert!(longest < 20, "{name}: {message}");
         assert!(message.contains(number), "{name}: {message}");
     }
+    server.shutdown().await;
+}
+
+/// The first run appended to a set-up stored without runs is the reference
+/// run: one with weights is refused naming its `weights` (no field before,
+/// session 21), and nothing is stored.
+#[tokio::test]
+async fn a_first_run_with_weights_is_refused_naming_its_weights() {
+    let (_dir, server, client) = fresh_server().await;
+    let mut setup = session();
+    setup["runs"] = json!([]);
+    let (status, _, created) = post(&client, &server.url("/api/v1/sessions"), &setup).await;
+    assert_eq!(status, 201, "{created}");
+    let id = created["id"].as_str().unwrap();
+    let url = server.url(&format!("/api/v1/sessions/{id}/runs"));
+    let (status, _, body) = post(&client, &url, &run(1)).await;
+    assert_eq!(status, 422, "{body}");
+    assert_eq!(body["error"]["code"], "no_reference_run", "{body}");
+    assert_eq!(body["error"]["field"], "weights", "{body}");
+    let (_, _, back) = send(client.get(server.url(&format!("/api/v1/sessions/{id}")))).await;
+    assert_eq!(back["runs"], json!([]), "{back}");
     server.shutdown().await;
 }

@@ -32,7 +32,26 @@ pub struct RunStored {
 /// Validate the session with the posted run at `index`, naming fields relative to
 /// the posted run (`readings[3].sensor`, not `runs[4].readings[3].sensor`).
 fn check_with_run(session: &Session, index: usize) -> Result<(), InputError> {
-    validate_stored(session).map_err(|e| relative_to_run(e, index))
+    validate_stored(session).map_err(|e| {
+        if e.code == "no_reference_run" {
+            return no_reference(session, index);
+        }
+        relative_to_run(e, index)
+    })
+}
+
+/// The session has no run without weights after the posted run went in:
+/// only that run can have taken the reference's place (a first run appended
+/// to a set-up, or the reference run corrected), so its `weights` are at
+/// fault. The service named no field (session 21).
+fn no_reference(session: &Session, index: usize) -> InputError {
+    let run = &session.runs[index];
+    let message = if session.runs.len() == 1 {
+        format!("run '{}' is the session's first run, which is the reference run (the rotor as found, no weights): store the run without weights first, then the runs with weights", run.id)
+    } else {
+        format!("run '{}' is the reference run (the rotor as found): it has no weights, and a session has exactly one such run; list weights only in the other runs", run.id)
+    };
+    InputError::invalid("no_reference_run", "weights", message)
 }
 
 fn relative_to_run(mut e: InputError, index: usize) -> InputError {

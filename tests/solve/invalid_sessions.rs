@@ -406,6 +406,18 @@ const CASES: &[(&str, Mutation, Stage, ErrorKind, &str)] = &[
         "planes[1].radius_mm",
     ),
     (
+        // Paired with nothing, it was blamed on the trial run's reading;
+        // in every run, an identify/rotor answered critical speeds of
+        // 7e-7 rpm (session 21). No balanced rotor turns slower than 1 rpm.
+        "reading speed below 1 rpm",
+        |s| {
+            s["runs"][0]["readings"][2]["speed_rpm"] = json!(1e-320);
+        },
+        Stage::Parse,
+        ErrorKind::Invalid,
+        "runs[0].readings[2].speed_rpm",
+    ),
+    (
         "both trials in one plane",
         |s| {
             s["runs"][2]["weights"][0]["plane"] = json!("inboard");

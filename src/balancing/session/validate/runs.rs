@@ -9,7 +9,9 @@
 use std::collections::HashMap;
 
 use super::fields::{check_amplitude, check_angle, check_positive};
-use super::{IdIndex, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE};
+use super::{
+    IdIndex, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE, MIN_SERVICE_SPEED_RPM,
+};
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Reading, Sensor, Session};
 
@@ -47,6 +49,17 @@ fn check_reading(
         false,
         "the speed",
     )?;
+    // As a rotor's service speed (fuzzing, session 21: 1e-320 rpm was read).
+    if r.speed_rpm < MIN_SERVICE_SPEED_RPM {
+        return Err(InputError::invalid(
+            "invalid_value",
+            format!("{}.speed_rpm", f()),
+            format!(
+                "the speed must be at least {MIN_SERVICE_SPEED_RPM} rpm, got {}",
+                crate::balancing::error::shown(r.speed_rpm)
+            ),
+        ));
+    }
     let sensor = match ids.get(hint) {
         // Ids are unique (checked before), so a match is the one the map gives.
         Some(s) if s.id == r.sensor => hint,
@@ -80,7 +93,7 @@ fn check_reading(
 #[inline]
 fn plainly_valid(r: &Reading) -> bool {
     let a = r.amplitude;
-    r.speed_rpm > 0.0
+    r.speed_rpm >= MIN_SERVICE_SPEED_RPM
         && r.speed_rpm <= MAX_SPEED_RPM
         && (a == 0.0 || (MIN_AMPLITUDE..=MAX_AMPLITUDE).contains(&a))
         && r.phase_deg.abs() <= MAX_ANGLE_DEG

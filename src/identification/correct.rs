@@ -421,7 +421,22 @@ pub fn correct(req: &ModelRequest) -> Result<ModelCorrection, InputError> {
         })
         .collect();
     let (p, iterations, residual) = if l.partial() {
-        let (x, iterations, residual) = iterate(&c, &l, x)?;
+        // A start that never settles is the request's to change: the error
+        // names `initial` where the request gave one (it named no field, a
+        // 4xx a client could not point at), else the modes it fitted.
+        let (x, iterations, residual) = iterate(&c, &l, x).map_err(|mut e| {
+            if e.code == "not_converged" && e.field.is_none() {
+                e.field = Some(
+                    if req.initial.is_some() {
+                        "initial"
+                    } else {
+                        "modes"
+                    }
+                    .into(),
+                );
+            }
+            e
+        })?;
         (x[..l.params].to_vec(), iterations, residual)
     } else {
         // Linear: one solve from zero gives the least-squares parameters.

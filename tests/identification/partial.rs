@@ -285,3 +285,13 @@ fn a_partly_measured_problem_too_large_for_one_matrix_is_refused_before_any_work
         "{err:?}"
     );
 }
+
+#[test]
+fn a_start_that_never_settles_is_refused_naming_initial() {
+    // Springs started 33 and 50 times too stiff: the steps wander for 200
+    // iterations (qa, session 21: `not_converged` named no field).
+    let err = correct(&masses_known_request(Some([1e5, 1e5]))).unwrap_err();
+    assert_eq!(err.code, "not_converged", "{err:?}");
+    assert_eq!(err.field.as_deref(), Some("initial"), "{err:?}");
+    assert!(err.message.contains("initial values"), "{err:?}");
+}

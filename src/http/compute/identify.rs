@@ -58,7 +58,7 @@ pub async fn free_decay(
     responses(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),
         MalformedJson,
-        (status = 422, description = "Non-square or asymmetric matrix, a mass or stiffness entry, measured frequency, shape entry, weight or starting parameter out of its range (docs/session-format.md, Identification), a shape of the wrong length, too few modes or more than degrees of freedom, modes that cannot settle the parameters and unmeasured shape entries (`too_few_equations`, `unidentifiable`, naming `modes`; a partly measured fit missing a measured frequency, `not_converged`), or a corrected model whose frequencies leave 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
+        (status = 422, description = "Non-square or asymmetric matrix, a mass or stiffness entry, measured frequency, shape entry, weight or starting parameter out of its range (docs/session-format.md, Identification), a shape of the wrong length, too few modes or more than degrees of freedom, modes that cannot settle the parameters and unmeasured shape entries (`too_few_equations`, `unidentifiable`, naming `modes`; a partly measured fit missing a measured frequency, `not_converged`, or not settling, `not_converged` naming `initial`), or a corrected model whose frequencies leave 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn model(

@@ -111,16 +111,20 @@ fn ids_of(items: &Value) -> Vec<String> {
         .collect()
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_page_of_sessions_and_its_total_agree_while_sessions_come_and_go() {
+/// Pages of the list at `path` (items under `key`) checked while a writer
+/// creates items (`body`) and deletes all but the newest six.
+async fn pages_agree_while_items_come_and_go(
+    path: &str,
+    key: &'static str,
+    body: impl Fn(usize) -> Value + Send + 'static,
+) {
     let (_dir, server, client) = fresh_server().await;
-    let session = example("pump-two-plane-exact.json")["session"].clone();
     let deleted = Arc::new(Mutex::new(HashSet::new()));
-    let base = server.url("/api/v1/sessions");
+    let base = server.url(path);
     let writer = tokio::spawn(churn(
         client.clone(),
         base.clone(),
-        move |_| session.clone(),
+        body,
         {
             let base = base.clone();
             move |id| format!("{base}/{id}")
@@ -136,49 +140,32 @@ async fn a_page_of_sessions_and_its_total_agree_while_sessions_come_and_go() {
             let url = format!("{base}?limit={limit}&offset={offset}");
             let (status, _, page) = send(client.get(url)).await;
             assert_eq!(status, 200, "{page}");
-            let ids = ids_of(&page["sessions"]);
+            let ids = ids_of(&page[key]);
             fits(ids.len(), page["total"].as_i64().unwrap(), limit, offset)?;
             consistent_ids(&ids, &gone)
         }
     })
     .await;
     server.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_page_of_sessions_and_its_total_agree_while_sessions_come_and_go() {
+    let session = example("pump-two-plane-exact.json")["session"].clone();
+    pages_agree_while_items_come_and_go("/api/v1/sessions", "sessions", move |_| session.clone())
+        .await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_page_of_machines_and_its_total_agree_while_machines_come_and_go() {
-    let (_dir, server, client) = fresh_server().await;
-    let deleted = Arc::new(Mutex::new(HashSet::new()));
-    let base = server.url("/api/v1/machines");
-    let writer = tokio::spawn(churn(
-        client.clone(),
-        base.clone(),
+    pages_agree_while_items_come_and_go(
+        "/api/v1/machines",
+        "machines",
         |i| json!({"id": format!("M-{i}")}),
-        {
-            let base = base.clone();
-            move |id| format!("{base}/{id}")
-        },
-        6,
-        deleted.clone(),
-    ));
-    probe(writer, |i| {
-        let (client, base, deleted) = (client.clone(), base.clone(), deleted.clone());
-        async move {
-            let gone = deleted.lock().unwrap().clone();
-            let (limit, offset) = [(100, 0), (100, 2), (3, 1)][i % 3];
-            let url = format!("{base}?limit={limit}&offset={offset}");
-            let (status, _, page) = send(client.get(url)).await;
-            assert_eq!(status, 200, "{page}");
-            let ids = ids_of(&page["machines"]);
-            fits(ids.len(), page["total"].as_i64().unwrap(), limit, offset)?;
-            consistent_ids(&ids, &gone)
-        }
-    })
+    )
     .await;
-    server.shutdown().await;
 }
 
-/// `X-Total-Count` of a headed list.
 fn total_count(headers: &reqwest::header::HeaderMap) -> i64 {
     headers["x-total-count"].to_str().unwrap().parse().unwrap()
 }

@@ -219,6 +219,12 @@ pub async fn type_cells_with_tab(b: &Browser, k: usize, values: &[String]) {
 /// Type run `k` of `session` (run name, weights, readings) and store it.
 /// With `carry`, weights of the previous trial still on the rotor are given by the tick.
 pub async fn type_run(b: &Browser, session: &Value, k: usize, carry: bool) {
+    fill_run(b, session, k, carry).await;
+    store(b).await;
+}
+
+/// Type run `k` of `session` (run name, weights, readings) without storing it.
+pub async fn fill_run(b: &Browser, session: &Value, k: usize, carry: bool) {
     let runs = session["runs"].as_array().expect("runs");
     let run = &runs[k];
     let weights = run["weights"].as_array().expect("weights");
@@ -267,7 +273,6 @@ pub async fn type_run(b: &Browser, session: &Value, k: usize, carry: bool) {
     )
     .await;
     type_cells_with_tab(b, k, &cells(session, run)).await;
-    store(b).await;
 }
 
 /// Press the store button and wait until the run is stored (or fail with the page's message).

@@ -16,40 +16,10 @@
 
 use serde_json::{json, Value};
 
-use crate::harness::form::{
-    cells, choose, field, type_cells_with_tab, type_into, type_setup, typed,
-};
+use crate::harness::form::{cells, field, fill_run, type_cells_with_tab, type_into, type_setup};
 use crate::harness::stand::{example_session, get, post, Stand};
 use crate::harness::steps::js;
 use crate::harness::Browser;
-
-/// Type trial run `k` of `session` (weights, name, readings) without storing it.
-async fn type_trial(b: &Browser, session: &Value, k: usize) {
-    let run = &session["runs"][k];
-    let w = &run["weights"][0];
-    b.click("#step-runs button.add-trial").await;
-    let path = format!("runs[{k}].weights[0]");
-    choose(
-        b,
-        &field(&format!("{path}.plane")),
-        w["plane"].as_str().unwrap(),
-    )
-    .await;
-    type_into(b, &field(&format!("{path}.mass_g")), &typed(&w["mass_g"])).await;
-    type_into(
-        b,
-        &field(&format!("{path}.angle_deg")),
-        &typed(&w["angle_deg"]),
-    )
-    .await;
-    type_into(
-        b,
-        &field(&format!("runs[{k}].id")),
-        run["id"].as_str().unwrap(),
-    )
-    .await;
-    type_cells_with_tab(b, k, &cells(session, run)).await;
-}
 
 /// The stored session's runs.
 async fn stored_runs(stand: &Stand, id: &str) -> Vec<Value> {
@@ -120,7 +90,7 @@ pub async fn a_store_that_half_succeeded_is_not_taken_for_another_tab(stand: &St
     b.open_fresh(&url).await;
 
     // (a) The run is added, then the read of the session's tag after it fails.
-    type_trial(b, &session, 1).await;
+    fill_run(b, &session, 1, false).await;
     js(
         b,
         "const real = window.fetch; let added = false; \
@@ -141,7 +111,7 @@ pub async fn a_store_that_half_succeeded_is_not_taken_for_another_tab(stand: &St
     // (b) The next run reaches the service, but its answer is lost: the page
     // cannot tell, and says so; Store again finds it stored, the same, and
     // goes on (the tag missed in (a) is no other tab's change either).
-    type_trial(b, &session, 2).await;
+    fill_run(b, &session, 2, false).await;
     lose_the_answer_of(b, "POST", "/runs").await;
     let said = press_store(b).await;
     assert!(

@@ -216,23 +216,29 @@ async fn tiny_amplitudes_never_give_a_non_number() {
     }
 }
 
+/// Run the binary with `args`, its standard output's read end closed at
+/// once (like `head` after its lines: every write then meets a closed
+/// pipe); its exit and standard error.
+fn run_into_a_closed_pipe(args: &[impl AsRef<std::ffi::OsStr>]) -> (std::process::Output, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out, stderr)
+}
+
 #[test]
 fn solve_piped_into_a_closed_reader_exits_quietly() {
     let file = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/examples/compressor-multispeed-noisy.json"
     );
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args(["solve", file])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    // Close the read end at once, like `head` after its lines: every write
-    // of the solution then meets a closed pipe.
-    drop(child.stdout.take());
-    let out = child.wait_with_output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (out, stderr) = run_into_a_closed_pipe(&["solve", file]);
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert_eq!(out.status.code(), Some(0), "{stderr}");
 }
@@ -287,15 +293,7 @@ fn every_file_command_piped_into_a_closed_reader_exits_quietly() {
         ),
     ];
     for (name, args) in cases {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-            .args(&args)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
-        drop(child.stdout.take());
-        let out = child.wait_with_output().unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let (out, stderr) = run_into_a_closed_pipe(&args);
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
         assert!(
             matches!(out.status.code(), Some(0) | Some(2)),

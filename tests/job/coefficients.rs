@@ -237,7 +237,15 @@ fn supplied_coefficients_that_miss_a_sensor_or_name_an_unknown_one_are_rejected(
     // was answered as `null`.
     let mut tiny = full.clone();
     tiny[2]["amplitude_per_g"] = json!(1e-300);
+    // Below 1 rpm, as no reading is (session 21).
+    let mut slow = full.clone();
+    slow[0]["speed_rpm"] = json!(1e-320);
     let cases = [
+        (
+            slow,
+            "invalid_value",
+            "options.influence_coefficients[0].speed_rpm",
+        ),
         (
             tiny,
             "invalid_value",

@@ -139,6 +139,13 @@ fn bad_runout_vectors_are_rejected_naming_the_field() {
             "invalid_value",
             "runout[0].phase_deg",
         ),
+        // 0 or from 1e-9, as a reading's amplitude (qa, session 21: 1e-320
+        // was taken where a reading of it is refused).
+        (
+            json!([{"sensor": "1H", "amplitude": 1e-320, "phase_deg": 0}]),
+            "invalid_value",
+            "runout[0].amplitude",
+        ),
     ];
     for (runout, code, field) in cases {
         let mut s = job(conv, &[Complex64::default(); 2]);

@@ -17,7 +17,7 @@ use num_complex::Complex64;
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Conventions, Session};
 use crate::balancing::phasor::reading_in;
-use crate::balancing::validate::{MAX_AMPLITUDE, MAX_ANGLE_DEG};
+use crate::balancing::validate::{MAX_AMPLITUDE, MAX_ANGLE_DEG, MIN_AMPLITUDE};
 
 /// The runout phasor of each sensor (internal frame), by sensor index; `None`
 /// for a sensor without one. Errors name `runout[i].…`.
@@ -42,11 +42,14 @@ pub fn vectors(session: &Session, conv: Conventions) -> Result<Vec<Option<Comple
                 ),
             ));
         }
-        if !(r.amplitude.is_finite() && (0.0..=MAX_AMPLITUDE).contains(&r.amplitude)) {
+        // 0, or a reading's range: a smaller runout than any reading resolves
+        // is no runout (1e-320 was taken where a reading of it is refused).
+        let a = r.amplitude;
+        if !(a == 0.0 || (MIN_AMPLITUDE..=MAX_AMPLITUDE).contains(&a)) {
             return Err(InputError::invalid(
                 "invalid_value",
                 f("amplitude"),
-                format!("the runout amplitude must be a finite number from 0 to {MAX_AMPLITUDE}"),
+                format!("the runout amplitude must be 0 or a finite number from {MIN_AMPLITUDE:e} to {MAX_AMPLITUDE:e}, as a reading's"),
             ));
         }
         if !(r.phase_deg.is_finite() && r.phase_deg.abs() <= MAX_ANGLE_DEG) {

@@ -58,10 +58,20 @@ fn bad(field: String, message: impl Into<String>) -> InputError {
 
 fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>, InputError> {
     let f = |x: &str| format!("{FIELD}[{i}].{x}");
-    if !(c.speed_rpm.is_finite() && c.speed_rpm > 0.0) {
+    // From 1 rpm, as a reading's (a coefficient at a slower speed pairs
+    // with no reading).
+    if !(c.speed_rpm.is_finite()
+        && (crate::balancing::validate::MIN_SERVICE_SPEED_RPM
+            ..=crate::balancing::validate::MAX_SPEED_RPM)
+            .contains(&c.speed_rpm))
+    {
         return Err(bad(
             f("speed_rpm"),
-            "a speed must be a finite number greater than 0",
+            format!(
+                "a speed must be a finite number from {} to {:e} rpm, as a reading's",
+                crate::balancing::validate::MIN_SERVICE_SPEED_RPM,
+                crate::balancing::validate::MAX_SPEED_RPM
+            ),
         ));
     }
     let a = c.amplitude_per_g;

@@ -58,6 +58,17 @@ pub(super) fn check_trim(
                     false,
                     "the speed",
                 )?;
+                // From 1 rpm, as a reading's: a coefficient at a slower
+                // speed pairs with no reading (1e-320 rpm was stored).
+                if c.speed_rpm < super::MIN_SERVICE_SPEED_RPM {
+                    return Err(invalid(
+                        f("speed_rpm"),
+                        format!(
+                            "a coefficient's speed is from {} rpm, as a reading's",
+                            super::MIN_SERVICE_SPEED_RPM
+                        ),
+                    ));
+                }
                 check_positive(
                     || f("amplitude_per_g"),
                     c.amplitude_per_g,

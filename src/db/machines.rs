@@ -14,7 +14,7 @@ use utoipa::ToSchema;
 
 use super::idempotency::{self, Idem};
 use super::{engine, never_stored, sessions, Db, ListPage, StoreError};
-use crate::balancing::model::{Rotor, Session};
+use crate::balancing::model::{Rotor, Session, Unit};
 
 /// A machine as posted.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
@@ -81,6 +81,47 @@ pub struct MachineSession {
     /// When that solution was computed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub solved_at: Option<String>,
+    /// With `summary`: the unit its figures are in, the one unit of the rows
+    /// it covers (the rows the solve used); `null` when they are in more than
+    /// one (then `units` names them). Beside the summary rather than in it:
+    /// the summary stays the solution's own.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<Unit>, nullable)]
+    pub unit: Option<Option<Unit>>,
+    /// With `summary`: every unit of the rows it covers, each once, in the
+    /// order of the solution's `predicted_residual`; one entry exactly when
+    /// `unit` is not `null`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units: Option<Vec<Unit>>,
+}
+
+/// What the machine's answer reads of a stored solution: its summary and the
+/// unit of each row, whether the summary covers it. Only these are built;
+/// the rest of the solution (coefficients, corrections, diagnostics) is
+/// skipped over, not parsed into values.
+#[derive(Deserialize)]
+struct StoredSummary {
+    summary: serde_json::Value,
+    predicted_residual: Vec<ResidualUnit>,
+}
+
+#[derive(Deserialize)]
+struct ResidualUnit {
+    unit: Unit,
+    used: bool,
+}
+
+impl StoredSummary {
+    /// The units of the rows the summary covers, each once, in row order.
+    fn units(&self) -> Vec<Unit> {
+        let mut units = Vec::new();
+        for row in self.predicted_residual.iter().filter(|r| r.used) {
+            if !units.contains(&row.unit) {
+                units.push(row.unit);
+            }
+        }
+        units
+    }
 }
 
 /// One coefficient version, without the coefficients.
@@ -224,18 +265,20 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
     let mut sessions = Vec::with_capacity(rows.len());
     for r in &rows {
         let solution: Option<String> = r.get("solution");
-        let summary = match solution {
-            Some(s) => serde_json::from_str::<serde_json::Value>(&s)?
-                .get("summary")
-                .cloned(),
-            None => None,
-        };
+        let stored = solution
+            .map(|s| serde_json::from_str::<StoredSummary>(&s))
+            .transpose()?;
+        let units = stored.as_ref().map(StoredSummary::units);
         sessions.push(MachineSession {
             id: r.get("id"),
             name: r.get("name"),
             created_at: r.get("created_at"),
             runs: r.get("runs"),
-            summary,
+            unit: units
+                .as_ref()
+                .map(|u| if u.len() == 1 { Some(u[0]) } else { None }),
+            units,
+            summary: stored.map(|s| s.summary),
             solved_at: r.get("solved_at"),
         });
     }

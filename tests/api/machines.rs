@@ -427,3 +427,77 @@ async fn the_openapi_document_lists_the_machine_endpoints() {
         assert!(doc["paths"].get(path).is_some(), "{path} missing");
     }
 }
+
+/// Each solved job on the machine's page says the unit of its before/after
+/// figures: the one unit of the sensors its latest solution summarised
+/// (`unit`), or `null` with `units` listing them when they differ. The page
+/// fetched every job's whole session to read its sensors' units, one request
+/// per job.
+#[tokio::test]
+async fn a_machines_jobs_say_the_unit_of_their_summary() {
+    let (_dir, server, client) = fresh_server().await;
+    let rotor = Rotor::new();
+    post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "ID-FAN-3"}),
+    )
+    .await;
+    let mut mils = job_session(&rotor, "ID-FAN-3", true, 41);
+    for sensor in mils["sensors"].as_array_mut().unwrap() {
+        sensor["unit"] = json!("mils_pp");
+    }
+    let mut mixed = job_session(&rotor, "ID-FAN-3", true, 42);
+    mixed["sensors"][1]["unit"] = json!("mm_s_rms");
+    let in_mils = store(&client, &server, &mils).await;
+    let both = store(&client, &server, &mixed).await;
+    let one_of_both = store(&client, &server, &mixed).await;
+    let unsolved = store(&client, &server, &mils).await;
+    store_solution(&client, &server, &in_mils).await;
+    let solved = store_solution(&client, &server, &both).await;
+    let codes: Vec<&str> = solved["solution"]["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|w| w["code"].as_str())
+        .collect();
+    assert!(codes.contains(&"mixed_units"), "{solved}");
+    // Solved first over both sensors, then (the latest) over the second alone:
+    // the summary is over that one sensor, in its unit.
+    store_solution(&client, &server, &one_of_both).await;
+    let url = server.url(&format!("/api/v1/sessions/{one_of_both}/solutions"));
+    let (status, _, latest) =
+        post(&client, &url, &json!({"sensors": ["2H"], "planes": ["A"]})).await;
+    assert_eq!(status, 201, "{latest}");
+
+    let (status, _, m) = send(client.get(server.url("/api/v1/machines/ID-FAN-3"))).await;
+    assert_eq!(status, 200, "{m}");
+    let entry = |id: &str| {
+        m["sessions"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|s| s["id"] == id)
+            .unwrap_or_else(|| panic!("{id} listed: {m}"))
+            .clone()
+    };
+    let jobs = [
+        (&in_mils, json!("mils_pp"), json!(["mils_pp"])),
+        (&both, Value::Null, json!(["um_pp", "mm_s_rms"])),
+        (&one_of_both, json!("mm_s_rms"), json!(["mm_s_rms"])),
+    ];
+    for (id, unit, units) in jobs {
+        let job = entry(id);
+        assert!(job["summary"].is_object(), "{job}");
+        assert_eq!(job.get("unit"), Some(&unit), "{job}");
+        assert_eq!(job["units"], units, "{job}");
+    }
+    assert_eq!(
+        entry(&one_of_both)["summary"],
+        latest["solution"]["summary"]
+    );
+    let job = entry(&unsolved);
+    for key in ["summary", "unit", "units"] {
+        assert!(job.get(key).is_none(), "no solution, no {key}: {job}");
+    }
+}

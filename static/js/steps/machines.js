@@ -111,21 +111,15 @@ function poolWarnings(latest, sessions) {
 }
 
 /**
- * The unit of each solved job's vibration (its sensors' one unit, "mixed
- * units" when they differ, "" when the session cannot be read): the machine's
- * jobs come without their sensors, and the before/after figures were bare
- * numbers beside every other amplitude of the form with its unit.
+ * The unit of each solved job's vibration, as the service gives it beside the
+ * job's summary: the one unit of the rows the summary covers, "mixed units"
+ * when they are several, "" from a service that does not say. The page
+ * fetched every solved job's whole session to read its sensors' units, one
+ * request per job.
  */
-async function jobUnits(sessions) {
-  const unitOf = async (x) => {
-    try {
-      const units = new Set((unwrapSession(await api.getSession(x.id)).sensors || []).map((sensor) => sensor.unit));
-      return [x.id, units.size === 1 ? unitLabel([...units][0]) : units.size > 1 ? "mixed units" : ""];
-    } catch (err) {
-      return [x.id, ""];
-    }
-  };
-  return new Map(await Promise.all(sessions.filter((x) => x.summary).map(unitOf)));
+function jobUnits(sessions) {
+  const unitOf = (x) => (x.unit ? unitLabel(x.unit) : (x.units || []).length > 1 ? "mixed units" : "");
+  return new Map(sessions.filter((x) => x.summary).map((x) => [x.id, unitOf(x)]));
 }
 
 async function machinePage(root, id, go) {
@@ -141,7 +135,7 @@ async function machinePage(root, id, go) {
   const solved = sessions.filter((x) => x.summary).map((x) => x.id);
   // The latest version's warnings; the page is whole without them.
   const latest = coefficients.length ? await api.getCoefficients(id).catch(() => null) : null;
-  const units = await jobUnits(sessions);
+  const units = jobUnits(sessions);
   const inUnit = (x, a, b) => `${fmt(a, 1)}, ${fmt(b, 1)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
   replace(root,
     h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),

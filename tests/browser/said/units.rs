@@ -72,7 +72,8 @@ pub async fn every_amplitude_of_the_answer_says_its_unit(stand: &Stand) {
 
 /// The machine page's jobs say their vibration's unit, each its own (the
 /// before and after figures were bare numbers); the trend names the unit
-/// only when every job on it reads in one.
+/// only when every job on it reads in one. The units come with the machine:
+/// the page fetched every solved job's whole session to read them.
 pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
     let b = &stand.browser;
     let mut other = machine_with_coefficients(stand).await;
@@ -88,9 +89,34 @@ pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
         json!({}),
     )
     .await;
+    // Every request the page makes from here on, by its path.
+    js(
+        b,
+        "window.fetched = []; const fetch = window.fetch; \
+         window.fetch = (url, init) => { window.fetched.push(String(url)); return fetch(url, init); }; \
+         return null",
+    )
+    .await;
     b.click("nav [data-step=\"machines\"]").await;
     b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
     b.wait_for("table.machine-jobs td.after").await;
+    let fetched = js(b, "return window.fetched").await;
+    let fetched: Vec<&str> = fetched
+        .as_array()
+        .expect("requests")
+        .iter()
+        .filter_map(|u| u.as_str())
+        .collect();
+    assert!(
+        fetched
+            .iter()
+            .any(|u| u.ends_with("/api/v1/machines/PUMP-1")),
+        "the page's requests are seen: {fetched:?}"
+    );
+    assert!(
+        !fetched.iter().any(|u| u.contains("/api/v1/sessions/")),
+        "the units come with the machine, not a request per job: {fetched:?}"
+    );
     let rows = js(
         b,
         "return [...document.querySelectorAll('table.machine-jobs tbody tr')].map((r) => \

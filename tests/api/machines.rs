@@ -263,6 +263,19 @@ async fn a_new_job_with_only_its_reference_run_is_trimmed_from_the_machines_stor
         .map(|w| w["code"].as_str().unwrap())
         .collect();
     assert!(codes.contains(&"coefficients_disagree"), "{codes:?}");
+    // The machine's stored coefficients are not called "supplied" (session 21).
+    let disagree = sol["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "coefficients_disagree")
+        .unwrap()["message"]
+        .as_str()
+        .unwrap();
+    assert!(
+        disagree.contains("stored for its machine") && !disagree.contains("the supplied"),
+        "{disagree}"
+    );
     // Pooled with the others, that session is named and can be left out.
     let s3 = store(&client, &server, &changed).await;
     let (_, _, v3) = post(&client, &url, &json!({"sessions": [s1, s2, s3]})).await;

@@ -152,7 +152,7 @@ pub fn supplied_checks(
         warnings.push(Warning {
             code: "coefficients_disagree".into(),
             message: format!(
-                "run(s) {} differ from what the supplied influence coefficients predict for their weights by more than the noise of the readings and of the coefficients explains: the rotor or its mounting may have changed since the coefficients were measured, or a weight or reading was typed wrong; the correction uses the supplied coefficients",
+                "run(s) {} differ from what the job's influence coefficients (supplied with it, or stored for its machine) predict for their weights by more than the noise of the readings and of the coefficients explains: the rotor or its mounting may have changed since the coefficients were measured, or a weight or reading was typed wrong; the correction uses those coefficients",
                 bad.iter().map(|r| format!("'{r}'")).collect::<Vec<_>>().join(", ")
             ),
             plane: None,

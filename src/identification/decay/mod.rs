@@ -411,7 +411,7 @@ fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), Inpu
     let ratio = -l[1];
     if ratio.is_nan() || ratio <= 0.0 {
         return Err(not_oscillatory(
-            "no decaying oscillation found in the samples: e^{-2nτ} of the fit (7.1) came out ≤ 0",
+            "no decaying oscillation found in the samples: they die away too fast to show one (damping near or above critical) or are not a free decay; record more samples a period, or excite a less damped mode (the fit (7.1) gave e^{-2nτ} ≤ 0)",
         ));
     }
     let n = -ratio.ln() / (2.0 * tau);

@@ -19,6 +19,7 @@ mod machines;
 mod openapi;
 mod pages;
 mod records;
+mod review22;
 mod runs;
 mod serve;
 mod service;

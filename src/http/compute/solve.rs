@@ -28,14 +28,12 @@ pub(crate) fn within_solve_request(e: InputError) -> InputError {
     }
 }
 
-/// What the core leaves to the request that defines a session: the machine
-/// it names (`validate::check_machine_id`), refused by a stateless
-/// endpoint as when the session is stored, named within `{"session", ...}`.
+/// What the core leaves to the request that defines a session: its texts
+/// and the machine it names (`validate::check_defined_strings`), refused by
+/// a stateless endpoint as when the session is stored (same code and
+/// message), named within `{"session", ...}`.
 pub(crate) fn check_posted_session(session: &Session) -> Result<(), InputError> {
-    match &session.machine {
-        Some(m) => validate::check_machine_id(|| "session.machine".into(), m),
-        None => Ok(()),
-    }
+    validate::check_defined_strings(session).map_err(|e| e.under("session"))
 }
 
 /// Name a solver error's field within a posted options body; a fault in the

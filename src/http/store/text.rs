@@ -34,23 +34,13 @@ pub fn check_text(field: impl FnOnce() -> String, text: &str) -> Result<(), Inpu
     validate::check_text_chars(field, text)
 }
 
-/// The strings a posted session defines.
+/// The strings a posted session defines: the core's rule for them
+/// (`validate::check_defined_strings`: `name`, `machine`, sensors' labels),
+/// the same the stateless endpoints apply. The planes', sensors' and runs'
+/// ids and `trim.coefficients_from.machine` are the core's ids: it checks
+/// them when the session is validated, stored or solved.
 pub fn check_session(s: &Session) -> Result<(), InputError> {
-    check_text(|| "name".into(), &s.name)?;
-    if let Some(m) = &s.machine {
-        // Looked up as a machine's id: the core's rule for one (an empty
-        // one named no machine, yet was stored as naming one).
-        validate::check_machine_id(|| "machine".into(), m)?;
-    }
-    // The planes', sensors' and runs' ids and `trim.coefficients_from.machine`
-    // are the core's ids: it checks them (with the same rule) when the
-    // session is validated, stored or solved.
-    for (i, x) in s.sensors.iter().enumerate() {
-        if let Some(l) = &x.label {
-            check_text(|| format!("sensors[{i}].label"), l)?;
-        }
-    }
-    Ok(())
+    validate::check_defined_strings(s)
 }
 
 /// The id of an appended run (its weights and readings name planes and

@@ -105,6 +105,29 @@ pub fn check_text_chars(field: impl FnOnce() -> String, text: &str) -> Result<()
     }
 }
 
+/// The strings a request that defines a session sets, beyond its ids
+/// (which `validate` checks wherever a session is validated): its `name`
+/// and sensors' `label`s (texts, [`check_text_chars`]) and the `machine` it
+/// names ([`check_machine_id`]); fields named from the session's root. The
+/// one rule for the store's posted session and the stateless endpoints that
+/// take a session (`/solve`, `/trial-weights`, `/identify/rotor`): left out
+/// of `validate` because a session stored before the rule may hold them and
+/// must still take runs and solve.
+pub fn check_defined_strings(s: &Session) -> Result<(), InputError> {
+    check_text_chars(|| "name".into(), &s.name)?;
+    if let Some(m) = &s.machine {
+        // Looked up as a machine's id: an empty one named no machine, yet
+        // was stored as naming one.
+        check_machine_id(|| "machine".into(), m)?;
+    }
+    for (i, x) in s.sensors.iter().enumerate() {
+        if let Some(l) = &x.label {
+            check_text_chars(|| format!("sensors[{i}].label"), l)?;
+        }
+    }
+    Ok(())
+}
+
 fn check_text(field: &str, text: &str, required: bool) -> Result<(), InputError> {
     if required && text.trim().is_empty() {
         return Err(invalid(field, "must not be empty"));

@@ -18,7 +18,9 @@ use std::collections::HashMap;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 
-pub use fields::{check_id_chars, check_machine_id, check_rotor, check_text_chars};
+pub use fields::{
+    check_defined_strings, check_id_chars, check_machine_id, check_rotor, check_text_chars,
+};
 pub(crate) use fields::{MAX_RADIUS_MM, MIN_RADIUS_MM, MIN_ROTOR_MASS_KG, MIN_SERVICE_SPEED_RPM};
 pub(crate) use runs::{MAX_MASS_G, MIN_MASS_G};
 

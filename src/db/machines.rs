@@ -238,8 +238,15 @@ pub async fn list(db: &Db, page: ListPage) -> Result<MachineList, StoreError> {
     })
 }
 
-/// The machine, its sessions and its coefficient versions, from one snapshot.
-pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
+/// The machine, its sessions (oldest first: `limit` of them from `offset`,
+/// every one from `offset` on without a limit) and its coefficient
+/// versions, with the number of its sessions in all, from one snapshot.
+pub async fn get(
+    db: &Db,
+    id: &str,
+    limit: Option<i64>,
+    offset: i64,
+) -> Result<(MachineDetail, i64), StoreError> {
     if never_stored(db.engine, id) {
         return Err(not_found(id));
     }
@@ -257,11 +264,18 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
                 (SELECT COUNT(*) FROM runs r WHERE r.session_seq = s.seq) AS runs,
                 (SELECT solution FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solution,
                 (SELECT created_at FROM solutions o WHERE o.session_seq = s.seq ORDER BY o.seq DESC LIMIT 1) AS solved_at
-         FROM sessions s WHERE s.machine = $1 ORDER BY s.seq",
+         FROM sessions s WHERE s.machine = $1 ORDER BY s.seq LIMIT $2 OFFSET $3",
     )
     .bind(id)
+    .bind(limit.unwrap_or(i64::MAX))
+    .bind(offset)
     .fetch_all(&mut *read)
     .await?;
+    let total: i64 = sqlx::query("SELECT COUNT(*) FROM sessions WHERE machine = $1")
+        .bind(id)
+        .fetch_one(&mut *read)
+        .await?
+        .get(0);
     let mut sessions = Vec::with_capacity(rows.len());
     for r in &rows {
         let solution: Option<String> = r.get("solution");
@@ -299,11 +313,14 @@ pub async fn get(db: &Db, id: &str) -> Result<MachineDetail, StoreError> {
         })
         .collect::<Result<_, StoreError>>()?;
     read.commit().await?;
-    Ok(MachineDetail {
-        machine,
-        sessions,
-        coefficients,
-    })
+    Ok((
+        MachineDetail {
+            machine,
+            sessions,
+            coefficients,
+        },
+        total,
+    ))
 }
 
 /// Delete a machine and its coefficient versions (never its sessions),

@@ -121,17 +121,41 @@ pub async fn list(
     Ok(Json(machines::list(&state.db, page).await?))
 }
 
+/// Most sessions one page of a machine's sessions may give.
+const MAX_SESSIONS_PAGE: i64 = 1000;
+
+/// Paging of a machine's sessions (`GET /api/v1/machines/{id}`), both
+/// optional: without them every session is given, as before paging was
+/// added.
+#[derive(Debug, Deserialize, IntoParams)]
+#[serde(deny_unknown_fields)]
+#[into_params(parameter_in = Query)]
+pub struct SessionsPage {
+    /// Sessions in the page, 1 to 1000 (default: every one from `offset` on).
+    pub limit: Option<i64>,
+    /// Sessions to skip, oldest first (default 0).
+    pub offset: Option<i64>,
+}
+
 #[utoipa::path(get, path = "/api/v1/machines/{id}", tag = "machines",
-    params(("id" = String, Path, description = "Machine id")),
+    params(("id" = String, Path, description = "Machine id"), SessionsPage),
     responses(
-        (status = 200, description = "The machine, its sessions with the summary of their latest solution, and its coefficient versions", body = MachineDetail),
+        (status = 200, description = "The machine, its sessions (oldest first; every one, or the page `limit` and `offset` ask for) with the summary of their latest solution, and its coefficient versions", body = MachineDetail,
+         headers(("X-Total-Count" = i64, description = "The machine's sessions in all"))),
+        PageRefused,
         (status = 404, description = "No such machine", body = ErrorBody),
     ))]
 pub async fn get(
     State(state): State<AppState>,
     Path(id): Path<String>,
-) -> Result<Json<MachineDetail>, ApiError> {
-    Ok(Json(machines::get(&state.db, &id).await?))
+    page: Result<Query<SessionsPage>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let Query(p) = page.map_err(invalid_query)?;
+    // A page's bounds as every list's; no limit: every session.
+    let (limit, offset) = headers::page_bounds(p.limit, p.offset, 1, MAX_SESSIONS_PAGE)?;
+    let limit = p.limit.map(|_| limit);
+    let (detail, total) = machines::get(&state.db, &id, limit, offset).await?;
+    Ok(headers::with_total(Json(detail).into_response(), total))
 }
 
 #[utoipa::path(delete, path = "/api/v1/machines/{id}", tag = "machines",

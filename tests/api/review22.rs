@@ -163,3 +163,37 @@ async fn a_machines_sessions_can_be_paged_and_the_default_is_every_session() {
         );
     }
 }
+
+/// A `max_mass_g` bound is at least the lightest weight a session may give
+/// (1e-6 g, as a run's `mass_g`): a bound of 5e-324 g was taken, answered a
+/// correction of 5e-324 g with an empty `split` on a plane with fixed places,
+/// and a warning spelling the bound with some 320 zeros.
+#[tokio::test]
+async fn a_mass_bound_below_the_lightest_weight_is_refused_naming_the_plane() {
+    let (_dir, server, client) = fresh_server().await;
+    let mut s = pump();
+    s["planes"][0]["positions"] = json!(12);
+    let url = server.url("/api/v1/solve");
+    for bound in [5e-324, 1e-300, 1e-12, 9.9e-7] {
+        for objective in ["least_squares", "min_max"] {
+            let body = json!({"session": s, "options": {"objective": objective, "max_mass_g": {"inboard": bound}}});
+            let (status, _, err) = post(&client, &url, &body).await;
+            assert_eq!(status, 422, "{bound:e} {objective}: {err}");
+            let (code, field, message) = error_of(&err);
+            assert_eq!(
+                (code, field),
+                ("invalid_value", Some("options.max_mass_g.inboard")),
+                "{err}"
+            );
+            assert!(message.contains("1e-6 g"), "{message}");
+        }
+    }
+    // From the lightest weight on, the bound holds and the correction is
+    // split over the plane's places.
+    let body = json!({"session": s, "options": {"max_mass_g": {"inboard": 1e-6}}});
+    let (status, _, solution) = post(&client, &url, &body).await;
+    assert_eq!(status, 200, "{solution}");
+    let c = &solution["corrections"][0];
+    assert!(c["mass_g"].as_f64().unwrap() <= 1e-6 * (1.0 + 1e-9), "{c}");
+    assert_eq!(c["split"].as_array().map(Vec::len), Some(2), "{c}");
+}

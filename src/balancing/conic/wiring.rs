@@ -10,9 +10,11 @@ use crate::balancing::error::InputError;
 use crate::balancing::model::{Objective, Session, SolveOptions};
 use crate::balancing::solution::Warning;
 use crate::balancing::solve::least_squares;
+use crate::balancing::validate::MIN_MASS_G;
 
 /// Check `max_mass_g` against the session: every key a plane, every bound a
-/// positive finite number of grams.
+/// finite number of grams from the lightest weight a run may give
+/// (`MIN_MASS_G`, 1e-6 g) on.
 pub fn check_mass_bounds(options: &SolveOptions, session: &Session) -> Result<(), InputError> {
     for (id, &m) in options.max_mass_g.iter().flatten() {
         let field = format!("options.max_mass_g.{id}");
@@ -28,6 +30,19 @@ pub fn check_mass_bounds(options: &SolveOptions, session: &Session) -> Result<()
                 "invalid_value",
                 field,
                 "a mass bound is a finite number of grams greater than 0",
+            ));
+        }
+        // Below the lightest weight a run may give, a bound holds the
+        // correction to nothing anyone can fit (5e-324 g gave an empty
+        // split and a warning spelling the bound with 320 zeros).
+        if m < MIN_MASS_G {
+            return Err(InputError::invalid(
+                "invalid_value",
+                field,
+                format!(
+                    "a mass bound is at least 1e-6 g, the lightest weight a run may give; got {} g (to solve without this plane, leave it out of options.planes)",
+                    crate::balancing::error::shown(m)
+                ),
             ));
         }
     }

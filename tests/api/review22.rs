@@ -197,3 +197,35 @@ async fn a_mass_bound_below_the_lightest_weight_is_refused_naming_the_plane() {
     assert!(c["mass_g"].as_f64().unwrap() <= 1e-6 * (1.0 + 1e-9), "{c}");
     assert_eq!(c["split"].as_array().map(Vec::len), Some(2), "{c}");
 }
+
+/// The residual-unbalance check's `plane` is an id, held to the id rule of
+/// every other id (no control character): `"A\u0000"` was answered back
+/// with its NUL.
+#[tokio::test]
+async fn a_residual_checks_plane_id_holds_no_control_character() {
+    let (_dir, server, client) = fresh_server().await;
+    let readings: Vec<Value> = (0..6)
+        .map(|k| {
+            let a = 60.0 * k as f64;
+            json!({"angle_deg": a, "amplitude": 1.0 + 0.3 * a.to_radians().cos()})
+        })
+        .collect();
+    let body = |plane: &str| {
+        json!({"plane": plane, "speed_rpm": 9000, "trial": {"mass_g": 2.0, "radius_mm": 150},
+               "journal_load_kg": 530.7, "readings": readings})
+    };
+    let url = server.url("/api/v1/residual-unbalance");
+    for plane in ["A\u{0}", "A\n", "\u{1b}[31mA", "A\u{85}"] {
+        let (status, _, err) = post(&client, &url, &body(plane)).await;
+        let (code, field, message) = error_of(&err);
+        assert_eq!(
+            (status, code, field),
+            (422, "invalid_value", Some("plane")),
+            "{plane:?}: {err}"
+        );
+        assert!(message.contains("control"), "{message}");
+    }
+    let (status, _, answer) = post(&client, &url, &body("Lüfter A/2")).await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["plane"], "Lüfter A/2");
+}

@@ -85,6 +85,8 @@ pub fn check(req: &ResidualRequest) -> Result<Input, InputError> {
                 "a plane id has 1 to 64 characters",
             ));
         }
+        // The id rule of every id (it was answered back holding a NUL).
+        crate::balancing::validate::check_id_chars(|| "plane".into(), p)?;
     }
     within(|| "speed_rpm".into(), req.speed_rpm, SPEED_RPM, "the speed")?;
     within(

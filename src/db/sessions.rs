@@ -180,12 +180,28 @@ async fn load_with(
     Ok((seq, session))
 }
 
-/// Delete a session with its runs and solutions.
-pub async fn delete(db: &Db, id: &str) -> Result<(), StoreError> {
+/// Delete a session with its runs and solutions; with `unchanged`, only
+/// if it judges the session as stored unchanged (`If-Match`), else
+/// `Stale` and nothing is deleted.
+pub async fn delete(
+    db: &Db,
+    id: &str,
+    unchanged: Option<impl FnOnce(&Session) -> bool>,
+) -> Result<(), StoreError> {
     if never_stored(db.engine, id) {
         return Err(no_session(id));
     }
     let mut tx = db.begin_write().await?;
+    // Read (and locked) in the deleting transaction: `unchanged` judges the
+    // session as it is deleted, not as it was a moment before.
+    if let Some(unchanged) = unchanged {
+        let (_, session) = load_for_update(&mut tx, id).await?;
+        if !unchanged(&session) {
+            return Err(StoreError::Stale(format!(
+                "session '{id}' changed since its ETag was read (or If-Match names no ETag of it): nothing was deleted; read it again"
+            )));
+        }
+    }
     let done = sqlx::query("DELETE FROM sessions WHERE id = $1")
         .bind(id)
         .execute(&mut *tx)

@@ -95,6 +95,30 @@ pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiErr
     ))
 }
 
+/// The entity tags `If-Match` names, as given: `None` without the header
+/// or with `*` (any current representation). Compared strongly (RFC 9110
+/// §13.1.1): a weak tag (`W/"…"`) is kept as given and so matches no ETag
+/// the service gives, all of them strong.
+pub fn if_match_tags(headers: &HeaderMap) -> Result<Option<Vec<String>>, ApiError> {
+    let Some(value) = headers.get(header::IF_MATCH) else {
+        return Ok(None);
+    };
+    let text = value.to_str().map_err(|_| {
+        ApiError::new(
+            StatusCode::BAD_REQUEST,
+            "invalid_header",
+            "If-Match is not ASCII",
+        )
+        .with_field("If-Match")
+    })?;
+    if text.trim() == "*" {
+        return Ok(None);
+    }
+    Ok(Some(
+        text.split(',').map(|t| t.trim().to_string()).collect(),
+    ))
+}
+
 /// Paging of a list: `limit` 1 to `max` (default `default`), `offset` 0 or more.
 #[derive(Debug, Deserialize, IntoParams)]
 #[serde(deny_unknown_fields)]

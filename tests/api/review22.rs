@@ -229,3 +229,68 @@ async fn a_residual_checks_plane_id_holds_no_control_character() {
     assert_eq!(status, 200, "{answer}");
     assert_eq!(answer["plane"], "Lüfter A/2");
 }
+
+/// `DELETE /api/v1/sessions/{id}` with `If-Match` deletes only the session
+/// the client read: a session changed since (its `ETag` is another) is
+/// kept and the answer is 412 naming `If-Match`, as a run's `PUT` answers.
+/// It was deleted whatever `If-Match` said. Without the header, or with
+/// `*`, a delete is unconditional as before.
+#[tokio::test]
+async fn deleting_a_session_honours_if_match() {
+    let (_dir, server, client) = fresh_server().await;
+    let store = server.url("/api/v1/sessions");
+    let mut first = pump();
+    first["runs"] = json!([pump()["runs"][0]]);
+    let (_, _, created) = post(&client, &store, &first).await;
+    let id = created["id"].as_str().unwrap().to_string();
+    let url = server.url(&format!("/api/v1/sessions/{id}"));
+    let (_, headers, _) = common::send(client.get(&url)).await;
+    let read = headers["etag"].to_str().unwrap().to_string();
+    // Another client appends a run: the session the first one read is gone.
+    let (status, _, appended) = post(&client, &format!("{url}/runs"), &pump()["runs"][1]).await;
+    assert_eq!(status, 201, "{appended}");
+    let (_, headers, _) = common::send(client.get(&url)).await;
+    let now = headers["etag"].to_str().unwrap().to_string();
+    assert_ne!(read, now);
+    for tag in [
+        read.clone(),
+        format!("W/{now}"),
+        "\"bogus\"".into(),
+        "bogus".into(),
+    ] {
+        let (status, _, err) =
+            common::send(client.delete(&url).header("If-Match", tag.as_str())).await;
+        let (code, field, _) = error_of(&err);
+        assert_eq!(
+            (status, code, field),
+            (412, "precondition_failed", Some("If-Match")),
+            "{tag}: {err}"
+        );
+        let (status, _, kept) = common::send(client.get(&url)).await;
+        assert_eq!(status, 200, "{tag}: the session is kept: {kept}");
+        assert_eq!(kept["runs"].as_array().map(Vec::len), Some(2));
+    }
+    let (status, _, _) = common::send(
+        client
+            .delete(&url)
+            .header("If-Match", format!("\"other\", {now}")),
+    )
+    .await;
+    assert_eq!(status, 204, "a list holding the current tag matches");
+    let (status, _, _) = common::send(client.get(&url)).await;
+    assert_eq!(status, 404);
+    // Unconditional deletes stay as they were.
+    for tag in [None, Some("*")] {
+        let (_, _, created) = post(&client, &store, &pump()).await;
+        let url = server.url(&format!(
+            "/api/v1/sessions/{}",
+            created["id"].as_str().unwrap()
+        ));
+        let mut req = client.delete(&url);
+        if let Some(t) = tag {
+            req = req.header("If-Match", t);
+        }
+        let (status, _, body) = common::send(req).await;
+        assert_eq!(status, 204, "{tag:?}: {body}");
+    }
+}

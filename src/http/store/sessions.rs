@@ -156,15 +156,27 @@ pub async fn get(
 }
 
 #[utoipa::path(delete, path = "/api/v1/sessions/{id}", tag = "sessions",
-    params(("id" = String, Path, description = "Session id")),
+    params(("id" = String, Path, description = "Session id"),
+           ("If-Match" = Option<String>, Header, description = "The session's ETag as read: deleted only if it has not changed since (strong comparison; `*` or no header: unconditionally)")),
     responses(
         (status = 204, description = "Deleted with its runs and solutions"),
         (status = 404, description = "No such session", body = ErrorBody),
+        (status = 412, description = "The session changed since its ETag was read (or `If-Match` names no ETag of it): nothing deleted", body = ErrorBody),
     ))]
 pub async fn delete(
     State(state): State<AppState>,
     Path(id): Path<String>,
+    request_headers: HeaderMap,
 ) -> Result<StatusCode, ApiError> {
-    db::sessions::delete(&state.db, &id).await?;
+    let tags = headers::if_match_tags(&request_headers)?;
+    // The tag is the one `GET` gives, of the session as read in the
+    // deleting transaction (so a change in between is seen).
+    let unchanged = tags.map(|tags| {
+        move |s: &crate::balancing::model::Session| {
+            let current = headers::etag_of(s);
+            tags.iter().any(|t| *t == current)
+        }
+    });
+    db::sessions::delete(&state.db, &id, unchanged).await?;
     Ok(StatusCode::NO_CONTENT)
 }

@@ -174,7 +174,7 @@ pub async fn delete(
     let unchanged = tags.map(|tags| {
         move |s: &crate::balancing::model::Session| {
             let current = headers::etag_of(s);
-            tags.iter().any(|t| *t == current)
+            tags.contains(&current)
         }
     });
     db::sessions::delete(&state.db, &id, unchanged).await?;

@@ -294,3 +294,24 @@ async fn deleting_a_session_honours_if_match() {
         assert_eq!(status, 204, "{tag:?}: {body}");
     }
 }
+
+/// A speed point may be listed more than once in `options.speeds_rpm`
+/// (stand software may send each sensor's recorded speed of one point, and
+/// speeds within 1 % are one point): the selection is the same as listing
+/// it once. Kept deliberately where a sensor or plane listed twice is
+/// refused, since refusing would break such clients; this test holds the
+/// decision.
+#[tokio::test]
+async fn a_speed_point_listed_twice_selects_what_listing_it_once_does() {
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/solve");
+    let once = json!({"session": pump(), "options": {"speeds_rpm": [2950]}});
+    let (status, _, single) = post(&client, &url, &once).await;
+    assert_eq!(status, 200, "{single}");
+    for speeds in [json!([2950, 2950]), json!([2950, 2960])] {
+        let body = json!({"session": pump(), "options": {"speeds_rpm": speeds}});
+        let (status, _, solution) = post(&client, &url, &body).await;
+        assert_eq!(status, 200, "{speeds}: {solution}");
+        assert_eq!(solution["corrections"], single["corrections"], "{speeds}");
+    }
+}

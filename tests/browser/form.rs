@@ -264,8 +264,9 @@ async fn a_stored_session_reopens_after_a_reload(stand: &Stand) {
         out
     };
     assert_eq!(amps.len(), 8, "two runs × four sensors: {amps:?}");
-    assert_eq!(amps[0], "465.4", "zero run, DE-H");
-    assert_eq!(amps[1], "1073", "trial inboard, DE-H");
+    // What was typed (465.37419496698874), to six significant digits.
+    assert_eq!(amps[0], "465.374", "zero run, DE-H");
+    assert_eq!(amps[1], "1073.16", "trial inboard, DE-H");
 
     // A fresh start at `/` lists it; opening it restores set-up and runs.
     b.client.goto(&stand.server.url("/")).await.unwrap();

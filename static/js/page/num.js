@@ -117,14 +117,17 @@ export function fmt(x, digits = 1) {
 }
 
 /**
- * A stored reading as it was typed: up to four significant digits (the
- * analyser's own), trailing zeros dropped, so 212.4 reads 212.4 and 0.085
- * reads 0.085 (the grid showed them as 212 and 0.09).
+ * A stored reading as it was typed: the number itself, shortest form, up to
+ * six significant digits (more than any analyser shows). The service keeps
+ * the number, not the text, so 212.45 reads 212.45, 0.085 reads 0.085 and
+ * 21,25 reads 21.25 (a decimal comma comes back as a point, trailing zeros go);
+ * only readings with more digits than anyone types (a data logger's, a mean
+ * of samples) are rounded to six. Four digits showed 212.45 as 212.5 and
+ * 1234.5 as 1235, so the grid disagreed with the analyser.
  */
 export function fmtReading(x) {
   if (x === null || x === undefined || !Number.isFinite(x)) return "–";
-  if (Math.abs(x) >= 1e4) return x.toFixed(0);
-  return String(Number(x.toPrecision(4)));
+  return String(Number(x.toPrecision(6)));
 }
 
 /** An angle for people, 0 to 360 with one decimal. */

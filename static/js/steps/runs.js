@@ -389,7 +389,8 @@ function grid(rerender) {
           ];
         }
         const reading = readingFor(c.run, row);
-        // As typed (fmtReading), not rounded: the technician compares them with the analyser.
+        // As typed (fmtReading: the stored number, up to six significant digits), not
+        // rounded to four: the technician compares them with the analyser.
         // A mean of repeated samples says so: the 95 % figures take their scatter from them.
         const n = reading && Array.isArray(reading.samples) ? reading.samples.length : 0;
         return [h("td", { class: "value amp" }, reading ? fmtReading(reading.amplitude) : "–", n ? h("small", { class: "samples" }, `mean of ${n}`) : ""), h("td", { class: "value phase" }, reading ? fmtReading(reading.phase_deg) : "–")];

@@ -1,5 +1,6 @@
-//! Readings shown as typed, answers with their unit, and a typed run kept
-//! when another job is opened from a list.
+//! Readings shown as typed (all their digits, a decimal comma as a point),
+//! answers with their unit, and a typed run kept when another job is opened
+//! from a list.
 
 use super::{confirmation, texts, ENTER};
 use crate::harness::form::{choose, field, type_into, value_of};
@@ -51,7 +52,7 @@ pub async fn small_readings_are_shown_as_typed_and_answers_carry_their_unit(stan
     type_into(
         b,
         &field("runs[1].readings[0].phase_deg"),
-        &format!("100{ENTER}"),
+        &format!("100,25{ENTER}"),
     )
     .await;
     b.wait_until(
@@ -59,7 +60,9 @@ pub async fn small_readings_are_shown_as_typed_and_answers_carry_their_unit(stan
         "return document.querySelectorAll('#step-runs td.value.amp').length === 2",
     )
     .await;
-    // Before: "0.09" and "212" for what was typed as 0.085 and 212.4.
+    // Before: "0.09" and "212" for what was typed as 0.085 and 212.4, and
+    // later "100.3" for 100,25 (four significant digits); a decimal comma
+    // comes back as a point.
     assert_eq!(
         texts(b, "#step-runs td.value.amp").await,
         ["0.085", "0.06"],
@@ -67,7 +70,7 @@ pub async fn small_readings_are_shown_as_typed_and_answers_carry_their_unit(stan
     );
     assert_eq!(
         texts(b, "#step-runs td.value.phase").await,
-        ["212.4", "100"],
+        ["212.4", "100.25"],
         "phases as typed"
     );
 

@@ -399,6 +399,37 @@ function grid(rerender) {
   ));
 }
 
+/**
+ * A block copied from a spreadsheet or an analyser's table (cells split by
+ * tabs, rows by line breaks) pasted into a cell of the run being typed: its
+ * values go into that cell and the ones after it in Tab order (amplitude,
+ * phase, the next row's amplitude, …), each checked as if typed. The whole
+ * block landed in the one cell ("465.3⇥356.6" marked "not a number"), and
+ * the technician typed the row again by hand.
+ */
+function pasteAcross(e, root) {
+  const cell = e.target;
+  if (!cell.matches || !cell.matches("td.cell input")) return;
+  const text = e.clipboardData ? e.clipboardData.getData("text/plain") : "";
+  if (!/[\t\n]/.test(text.replace(/\s+$/, ""))) return;
+  e.preventDefault();
+  const values = text.replace(/\s+$/, "").split(/\r?\n/).flatMap((line) => line.split("\t")).map((v) => v.trim());
+  const cells = [...cell.closest("tbody").querySelectorAll("td.cell input")];
+  const from = cells.indexOf(cell);
+  const room = cells.length - from;
+  values.slice(0, room).forEach((v, i) => {
+    const input = cells[from + i];
+    input.value = v;
+    input.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  cells[from + Math.min(values.length, room) - 1].focus();
+  // More values than cells left: said, not dropped unseen (above the run, not
+  // at a cell: a mark on a good cell goes at its blur, and the layout moving
+  // under the pointer then ate the click on Store).
+  const extra = values.length - room;
+  banner(root, "error", extra > 0 ? `${values.length} values were pasted and ${room} cell${room === 1 ? "" : "s"} of this run were left from the one pasted into: ${extra === 1 ? "the last value" : `the last ${extra}`} (${values.slice(room).join(", ")}) ${extra === 1 ? "was" : "were"} not used. Check that the block was copied from the right place.` : "");
+}
+
 const rowKey = (row) => `${row.speed}|${row.sensor}`;
 
 /** Keep typed cells with their speed and sensor when the set-up changed the rows. */
@@ -456,7 +487,7 @@ export function renderRuns(root, solve) {
       d.zero ? "" : [suggestionBox(d, k, rerender), weightsEditor(d, k, rerender)]) : "",
     d ? h("p", { class: "hint decimal-rule" }, DECIMAL_RULE, " ", csvImportButton(root, rerender)) : "",
     d ? h("p", { class: "hint csv-shapes" }, CSV_SHAPES) : "",
-    h("div", { onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root, rerender); } } }, grid(rerender)),
+    h("div", { onpaste: (e) => pasteAcross(e, root), onkeydown: (e) => { if (e.key === "Enter" && d && e.target.matches("input")) { e.preventDefault(); store(root, rerender); } } }, grid(rerender)),
     h("div", { class: "actions sticky" },
       d ? [
         h("button", { type: "button", class: "primary store", onclick: () => store(root, rerender) },

@@ -3,7 +3,8 @@
 //! their unit (`typed`); rotor data lost without a word — a rotor mass
 //! checked as a "radius in mm", a rotor without its grade refused by the
 //! service, a machine's rotor that could never be stored (`rotor`); a typed
-//! run dropped when another job was opened from a list (`typed`); sessions
+//! run dropped when another job was opened from a list, and a spreadsheet row
+//! pasted whole into one cell (`typed`); sessions
 //! beyond the 50 newest and machines beyond 100 that the lists never showed
 //! (`lists`); a trim job from stored coefficients that could not be solved
 //! again when reopened in another browser (`trim`).
@@ -24,6 +25,8 @@ pub const ENTER: &str = "\u{e007}";
 async fn a_new_user_loses_nothing_typed_and_reads_each_number_with_its_unit() {
     let mut stand = Stand::start().await;
     typed::small_readings_are_shown_as_typed_and_answers_carry_their_unit(&stand).await;
+    stand.renew().await;
+    typed::a_pasted_spreadsheet_block_fills_the_cells_in_tab_order(&stand).await;
     stand.renew().await;
     rotor::a_rotor_given_in_part_is_marked_not_dropped(&stand).await;
     stand.renew().await;

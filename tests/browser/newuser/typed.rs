@@ -127,3 +127,63 @@ pub async fn a_typed_run_is_not_dropped_by_opening_another_job(stand: &Stand) {
     )
     .await;
 }
+
+/// A spreadsheet row pasted into the grid (cells split by tabs, rows by line
+/// breaks, decimal commas, a trailing line break as spreadsheets copy it):
+/// every value lands in its own cell, in Tab order. WebDriver cannot reach
+/// the system clipboard in headless Chromium, so the paste is the event the
+/// page gets, carrying the clipboard's text. It landed whole in the first cell.
+pub async fn a_pasted_spreadsheet_block_fills_the_cells_in_tab_order(stand: &Stand) {
+    let b = &stand.browser;
+    type_into(b, &field("name"), "Pasted").await;
+    type_into(b, &field("speeds"), "1480").await;
+    type_into(b, &field("planes[0].id"), "A").await;
+    type_into(b, &field("sensors[0].id"), "1H").await;
+    b.click("button.add-sensor").await;
+    type_into(b, &field("sensors[1].id"), "1V").await;
+    b.click("#step-setup button.next").await;
+    let first = field("runs[0].readings[0].amplitude");
+    b.wait_for(&first).await;
+    let paste = format!(
+        "const cell = document.querySelector({}); cell.focus(); \
+         const data = new DataTransfer(); data.setData('text/plain', '85,5\\t212.4\\r\\n61.25\\t100,25\\r\\n'); \
+         cell.dispatchEvent(new ClipboardEvent('paste', {{ clipboardData: data, bubbles: true, cancelable: true }}));",
+        serde_json::to_string(&first).unwrap()
+    );
+    b.client.execute(&paste, vec![]).await.unwrap();
+    let mut cells = Vec::new();
+    for f in [
+        "readings[0].amplitude",
+        "readings[0].phase_deg",
+        "readings[1].amplitude",
+        "readings[1].phase_deg",
+    ] {
+        cells.push(value_of(b, &field(&format!("runs[0].{f}"))).await);
+    }
+    assert_eq!(cells, ["85,5", "212.4", "61.25", "100,25"], "one value a cell");
+    // A value more than the run has cells left is said, not dropped unseen.
+    let second = field("runs[0].readings[1].amplitude");
+    let again = format!(
+        "const cell = document.querySelector({}); cell.focus(); \
+         const data = new DataTransfer(); data.setData('text/plain', '61.25\\t100,25\\t0.5'); \
+         cell.dispatchEvent(new ClipboardEvent('paste', {{ clipboardData: data, bubbles: true, cancelable: true }}));",
+        serde_json::to_string(&second).unwrap()
+    );
+    b.client.execute(&again, vec![]).await.unwrap();
+    assert_eq!(
+        b.text("#step-runs .banner.error").await,
+        "3 values were pasted and 2 cells of this run were left from the one pasted into: \
+         the last value (0.5) was not used. Check that the block was copied from the right place."
+    );
+    // Stored as typed: the grid shows what was pasted (a decimal comma as a point).
+    b.click("#step-runs button.store").await;
+    b.wait_for("#step-runs button.add-trial").await;
+    assert_eq!(
+        texts(b, "#step-runs td.value.amp").await,
+        ["85.5", "61.25"]
+    );
+    assert_eq!(
+        texts(b, "#step-runs td.value.phase").await,
+        ["212.4", "100.25"]
+    );
+}

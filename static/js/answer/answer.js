@@ -4,7 +4,7 @@
 // prediction, and the pictures. The report reuses the parts.
 
 import { h } from "../page/dom.js";
-import { fmt, fmtAngle, commonUnit, unitLabel } from "../page/num.js";
+import { fmt, fmtAngle, unitOrMix, unitLabel } from "../page/num.js";
 import { state } from "../job/state.js";
 import { correctionsTable, summaryBox, residualTable, residualNote, warningsBox, phaseWords, angleWords } from "../steps/solve.js";
 import { doubt } from "./words.js";
@@ -24,8 +24,8 @@ export function verdict(sol) {
   const max = sol.summary ? sol.summary.max_before : null;
   if (!limit || max === null || !run) return "";
   const ok = max <= limit;
-  const unit = commonUnit(sol.predicted_residual);
-  const u = unit ? ` ${unit}` : "";
+  const unit = unitOrMix(sol.predicted_residual);
+  const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
   return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
     ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, at or below the limit of ${fmt(limit, 1)}${u}. No more weights are needed.`
       : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, above the limit of ${fmt(limit, 1)}${u}. Fit the weights below and do a check run.`);
@@ -58,10 +58,10 @@ function checkRow(r) {
     h("td", { class: "unit" }, unitOf(r.sensor)));
 }
 
-/** " µm pk-pk" when every row of `rows` (with a `sensor`) reads in that unit; "" when they mix units. */
+/** " µm pk-pk" when every row of `rows` (with a `sensor`) reads in that unit; " (mixed units: …)" when they mix units. */
 function rowsUnit(rows) {
-  const u = commonUnit((rows || []).map((r) => ({ unit: (state.setup.sensors.find((s) => s.id === r.sensor) || {}).unit })));
-  return u ? ` ${u}` : "";
+  const u = unitOrMix((rows || []).map((r) => ({ unit: (state.setup.sensors.find((s) => s.id === r.sensor) || {}).unit })));
+  return u ? ` ${u.startsWith("mixed") ? `(${u})` : u}` : "";
 }
 
 /**
@@ -140,8 +140,8 @@ export function planePictures(sol) {
 function fitSummary(sol) {
   const f = sol.fit_summary;
   if (!sol.fit || !f) return "";
-  const unit = commonUnit(sol.predicted_residual);
-  const u = unit ? ` ${unit}` : "";
+  const unit = unitOrMix(sol.predicted_residual);
+  const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
   return h("p", { class: "fit-summary" },
     `With the kit weights shown: RMS ${fmt(f.rms_after, 2)}${u}, largest ${fmt(f.max_after, 2)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 2)}${u}). `,
     f.optimal ? "The best choice the kits allow." : "The best choice found in the time allowed, not proven the best.");

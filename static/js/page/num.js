@@ -159,6 +159,18 @@ export function commonUnit(rows) {
 }
 
 /**
+ * The unit of a figure taken over these rows, in words: their one unit, or,
+ * when they mix units (µm pk-pk beside mils pk-pk), "mixed units: µm pk-pk,
+ * mils pk-pk", so that an RMS or a largest over them is not read as µm.
+ * Such figures were shown bare, like a number in no unit at all.
+ */
+export function unitOrMix(rows) {
+  const units = [...new Set((rows || []).map((r) => r.unit).filter(Boolean))];
+  if (units.length <= 1) return commonUnit(rows);
+  return `mixed units: ${units.map(unitLabel).join(", ")}`;
+}
+
+/**
  * When a session, machine, coefficient version or solution was stored, as one text on
  * every page: "2026-11-24 06:25 UTC". The service stores RFC 3339 times in UTC
  * (…T06:25:39.123Z); the day in ISO order and the zone said match the

@@ -5,7 +5,7 @@
 // Print CSS shows only this section on paper.
 
 import { h, replace, $ } from "../page/dom.js";
-import { fmt, fmtAngle, unitLabel, commonUnit, storedAt } from "../page/num.js";
+import { fmt, fmtAngle, unitLabel, unitOrMix, storedAt } from "../page/num.js";
 import { state, rows, readingFor } from "../job/state.js";
 import { weightsText } from "./runs.js";
 import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox, angleWords } from "./solve.js";
@@ -16,8 +16,8 @@ import { plotsSection } from "../plots/plots.js";
 function fitTable(sol) {
   if (!sol.fit) return "";
   const optimal = sol.fit_summary && sol.fit_summary.optimal;
-  const unit = commonUnit(sol.predicted_residual);
-  const u = unit ? ` ${unit}` : "";
+  const unit = unitOrMix(sol.predicted_residual);
+  const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
   return h("div", { class: "report-fit" },
     h("h4", {}, "Weights to fit"),
     h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, `Angle, ° (${angleWords(sol.conventions || state.setup.conventions)})`), h("th", {}, "Mass, g"))),

@@ -4,7 +4,7 @@
 
 import { h, replace } from "../page/dom.js";
 import { banner, markServerError } from "../page/fields.js";
-import { fmt, fmtAngle, angleDiff, unitLabel, commonUnit, storedAt } from "../page/num.js";
+import { fmt, fmtAngle, angleDiff, unitLabel, unitOrMix, storedAt } from "../page/num.js";
 import { api } from "../job/api.js";
 import { state, changed } from "../job/state.js";
 import { plainWarning, doubt, UNBIASED_WORDS } from "../answer/words.js";
@@ -130,8 +130,8 @@ export function summaryBox(solution) {
   const sm = solution.summary;
   const cut = sm.rms_before > 0 ? 100 * (1 - sm.rms_after / sm.rms_before) : 0;
   const doubtful = unsure(solution);
-  // The unit the figures are in, when every sensor has the same one (the RMS of mixed units has none).
-  const unit = commonUnit(solution.predicted_residual);
+  // The unit the figures are in, or the units they mix (the RMS of mixed units has none).
+  const unit = unitOrMix(solution.predicted_residual);
   const inUnit = unit ? `, ${unit}` : "";
   return h("div", { class: doubtful ? "summary unsure" : "summary" },
     doubtful ? h("p", { class: "unsure-note" }, "Not to be trusted: the vibration after and the reduction below assume the corrections above are right, and the greyed ones may be far off. Do what is said under them first (a bigger trial weight, or a check run and a trim).") : "",

@@ -142,3 +142,35 @@ pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
         "two units: none named for both: {caption}"
     );
 }
+
+/// A job whose sensors read in two units (proximity probes in µm pk-pk
+/// beside others in mils pk-pk): the summary's RMS and largest figures,
+/// taken over all of them, were shown bare, as if in no unit at all, and
+/// read as µm. They now name the units they mix.
+pub async fn figures_over_mixed_units_say_so(stand: &Stand) {
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for s in session["sensors"].as_array_mut().unwrap() {
+        if s["id"].as_str().unwrap().ends_with("-V") {
+            s["unit"] = json!("mils_pp");
+        }
+    }
+    let created = post(stand, "/api/v1/sessions", session).await;
+    let id = created["id"].as_str().expect("stored").to_string();
+    open_at_solve(stand, &id).await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .summary").await;
+    let labels = js(
+        b,
+        "return [...document.querySelectorAll('#step-solve .summary .big .label')].map((e) => e.textContent)",
+    )
+    .await;
+    assert_eq!(
+        labels[0], "RMS over sensors, mixed units: µm pk-pk, mils pk-pk",
+        "{labels}"
+    );
+    assert_eq!(
+        labels[1], "Largest, mixed units: µm pk-pk, mils pk-pk",
+        "{labels}"
+    );
+}

@@ -160,7 +160,11 @@ pub async fn a_pasted_spreadsheet_block_fills_the_cells_in_tab_order(stand: &Sta
     ] {
         cells.push(value_of(b, &field(&format!("runs[0].{f}"))).await);
     }
-    assert_eq!(cells, ["85,5", "212.4", "61.25", "100,25"], "one value a cell");
+    assert_eq!(
+        cells,
+        ["85,5", "212.4", "61.25", "100,25"],
+        "one value a cell"
+    );
     // A value more than the run has cells left is said, not dropped unseen.
     let second = field("runs[0].readings[1].amplitude");
     let again = format!(
@@ -178,10 +182,7 @@ pub async fn a_pasted_spreadsheet_block_fills_the_cells_in_tab_order(stand: &Sta
     // Stored as typed: the grid shows what was pasted (a decimal comma as a point).
     b.click("#step-runs button.store").await;
     b.wait_for("#step-runs button.add-trial").await;
-    assert_eq!(
-        texts(b, "#step-runs td.value.amp").await,
-        ["85.5", "61.25"]
-    );
+    assert_eq!(texts(b, "#step-runs td.value.amp").await, ["85.5", "61.25"]);
     assert_eq!(
         texts(b, "#step-runs td.value.phase").await,
         ["212.4", "100.25"]

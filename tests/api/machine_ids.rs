@@ -272,6 +272,27 @@ async fn a_version_no_machine_could_have_is_a_bad_value_not_a_missing_one() {
             assert_eq!(err["error"]["field"], "version", "{u}: {err}");
         }
     }
+    // The same version asked of a solve (`coefficients_from`) or named by a
+    // stored trim job is the same bad value, said with the same code (it was
+    // `unknown_version` in a solve and `invalid_value` in a trim).
+    let mut session = job_session("V-1", 62);
+    let solve = json!({"session": session.clone(),
+        "options": {"coefficients_from": {"machine": "V-1", "version": 0}}});
+    let (status, _, err) = post(&client, &server.url("/api/v1/solve"), &solve).await;
+    assert_eq!(status, 422, "{err}");
+    assert_eq!(err["error"]["code"], "out_of_range", "{err}");
+    assert_eq!(
+        err["error"]["field"], "options.coefficients_from.version",
+        "{err}"
+    );
+    session["trim"] = json!({"coefficients_from": {"machine": "V-1", "version": -3}});
+    let (status, _, err) = post(&client, &server.url("/api/v1/sessions"), &session).await;
+    assert_eq!(status, 422, "{err}");
+    assert_eq!(err["error"]["code"], "out_of_range", "{err}");
+    assert_eq!(
+        err["error"]["field"], "trim.coefficients_from.version",
+        "{err}"
+    );
     // Not a number at all: the query's syntax (as `limit=many`), 400.
     for q in ["?version=1.5", "?version=x", "?version="] {
         let (status, _, err) = send(client.get(url(q))).await;

@@ -128,7 +128,7 @@ async fn a_purpose_or_trim_that_means_nothing_is_refused_naming_its_field() {
         (
             Box::new(|s| s["trim"] = json!({"coefficients_from": {"machine": "M", "version": 0}})),
             422,
-            "invalid_value",
+            "out_of_range",
             "trim.coefficients_from.version",
         ),
         (

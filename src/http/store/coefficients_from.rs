@@ -33,6 +33,15 @@ pub async fn resolve(
             "give influence_coefficients or coefficients_from, not both",
         )));
     }
+    // Below 1 no machine could have the version: a bad value, said as a
+    // machine's coefficients and a trim job say it.
+    if let Some(v) = from.version.filter(|&v| v < 1) {
+        return Err(fail(InputError::invalid(
+            "out_of_range",
+            "options.coefficients_from.version",
+            crate::balancing::validate::version_below_one(v),
+        )));
+    }
     let stored = match machines::coefficients(&state.db, &from.machine, from.version).await? {
         Ok(s) => s,
         Err(Missing::Machine) => {

@@ -312,7 +312,7 @@ pub async fn get_coefficients(
         return Err(InputError::invalid(
             "out_of_range",
             "version",
-            format!("versions are numbered from 1; this one is {v}"),
+            crate::balancing::validate::version_below_one(v),
         )
         .into());
     }

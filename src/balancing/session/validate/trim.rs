@@ -19,10 +19,11 @@ pub(super) fn check_trim(
     match (&trim.coefficients_from, &trim.influence_coefficients) {
         (Some(from), None) => {
             check_machine_id(|| "trim.coefficients_from.machine".into(), &from.machine)?;
-            if from.version.is_some_and(|v| v < 1) {
-                return Err(invalid(
+            if let Some(v) = from.version.filter(|&v| v < 1) {
+                return Err(InputError::invalid(
+                    "out_of_range",
                     "trim.coefficients_from.version",
-                    "coefficient versions count from 1",
+                    version_below_one(v),
                 ));
             }
             Ok(())
@@ -108,4 +109,11 @@ pub(super) fn check_purposes(session: &Session) -> Result<(), InputError> {
         }
     }
     Ok(())
+}
+
+/// Why a coefficient version below 1 is refused (`out_of_range`), in the
+/// words every place that takes a version uses: a machine's coefficients
+/// (`?version=`), a solve's `coefficients_from` and a trim job's.
+pub fn version_below_one(v: i64) -> String {
+    format!("versions are numbered from 1; this one is {v}")
 }

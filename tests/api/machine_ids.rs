@@ -110,6 +110,11 @@ async fn machine_ids_with_control_characters_are_refused_naming_the_field() {
         "a\u{7f}",
         "a\u{85}b",
         "end\r",
+        // Blank: a machine no one can tell from no machine (a blank name
+        // was refused, a blank id stored).
+        " ",
+        "   ",
+        "\u{a0}",
     ] {
         let (status, _, err) = post(&client, &machines, &json!({"id": id})).await;
         assert_eq!(status, 422, "{id:?}: {err}");
@@ -184,6 +189,7 @@ async fn a_stored_sessions_machine_is_refused_when_no_machine_could_have_that_id
         String::new(),
         "M\u{0}".into(),
         "M\n1".into(),
+        " ".into(),
     ] {
         let s = job_session(&bad, 55);
         let (status, _, err) = post(&client, &url, &s).await;

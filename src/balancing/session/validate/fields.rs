@@ -52,6 +52,14 @@ pub fn check_machine_id(field: impl FnOnce() -> String, id: &str) -> Result<(), 
             format!("a machine id has 1 to 64 characters; this one has {n}"),
         ));
     }
+    // A blank id names a machine no one can tell from none (a blank name
+    // is refused too).
+    if id.trim().is_empty() {
+        return Err(invalid(
+            field(),
+            "a machine id is not blank: it holds a character other than spaces",
+        ));
+    }
     check_id_chars(field, id)
 }
 

@@ -650,3 +650,34 @@ fn a_decay_sampled_near_or_below_twice_a_period_answers_what_the_samples_show_an
         "{message}"
     );
 }
+
+/// A record whose first swings ran into the recorder's range (clipped flat at
+/// 0.6 of a decay starting at 1) was answered with ζ 0.0168 ± 0.0005 for a
+/// true 0.02, and no word of the clipping: flat tops make the decay look
+/// slower (review, session 22: 0 of 100 such records covered the truth). It
+/// now warns `clipped`, naming the rail; the same records unclipped, and
+/// rounded to a coarse step (8 and 5 levels a swing: the largest value repeats
+/// at several peaks, but the decay passes through them), do not warn.
+#[test]
+fn a_clipped_decay_warns_and_a_coarsely_rounded_one_does_not() {
+    let codes =
+        |got: &FreeDecay| -> Vec<String> { got.warnings.iter().map(|w| w.code.clone()).collect() };
+    let tau = 1.0 / (5.0 * 20.0);
+    for (seed, noise) in [(1, 0.0), (2, 0.01), (3, 0.01)] {
+        let clean = noisy_viscous(5.0, 0.02, tau, 400, noise, seed);
+        let clipped: Vec<f64> = clean.iter().map(|y| y.clamp(-0.6, 0.6)).collect();
+        let got = fit(&clipped, tau, DampingLaw::Viscous);
+        assert_eq!(codes(&got), ["clipped"], "{got:?}");
+        assert!(got.warnings[0].message.contains("0.6"), "{got:?}");
+        for law in [DampingLaw::Viscous, DampingLaw::Turbulent] {
+            let got = fit(&clipped, tau, law);
+            assert!(codes(&got).contains(&"clipped".to_string()), "{got:?}");
+        }
+        assert!(codes(&fit(&clean, tau, DampingLaw::Viscous)).is_empty());
+        for step in [0.125, 0.2] {
+            let rounded: Vec<f64> = clean.iter().map(|y| round_to(y / step, 0) * step).collect();
+            let got = fit(&rounded, tau, DampingLaw::Viscous);
+            assert!(codes(&got).is_empty(), "step {step}: {got:?}");
+        }
+    }
+}

@@ -43,7 +43,7 @@ pub async fn rotor(
 #[utoipa::path(post, path = "/api/v1/identify/free-decay", tag = "identification",
     request_body = FreeDecayRequest,
     responses(
-        (status = 200, description = "Natural frequency (`frequency_hz`: the undamped ω0/2π; `damped_frequency_hz` the frequency of the decaying oscillation, `undamped_frequency_hz` = `frequency_hz`), damping (`damping_ratio`, viscous only), the 95 % resolutions of both (viscous), decrement, amplitude and phase, the `offset` the record sits on (fitted, or the request's), and `warnings` (`few_samples_per_period`)", body = FreeDecay),
+        (status = 200, description = "Natural frequency (`frequency_hz`: the undamped ω0/2π; `damped_frequency_hz` the frequency of the decaying oscillation, `undamped_frequency_hz` = `frequency_hz`), damping (`damping_ratio`, viscous only), the 95 % resolutions of both (viscous), decrement, amplitude and phase, the `offset` the record sits on (fitted, or the request's), and `warnings` (`few_samples_per_period`; `clipped`, the record flat at its largest or smallest value where the fitted decay goes on past it)", body = FreeDecay),
         MalformedJson,
         (status = 422, description = "Too few samples, a step `dt_s` outside 1e-9 to 25 s, a sample above 1e12 or all below 1e-12 in size, samples that show no decaying oscillation (less than half a period, a growing amplitude, or a fit explaining too little of the record: F ratio below 10), an `offset` above 1e12 in size, or a frequency outside 0.01 to 1e5 Hz (`frequency_out_of_range`)", body = ErrorBody),
         SolverBusy,

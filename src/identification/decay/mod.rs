@@ -126,7 +126,8 @@ pub struct FreeDecay {
     /// where it gave one.
     pub offset: f64,
     /// Conditions the technician should know about (as `/solve`'s):
-    /// `few_samples_per_period` (fewer than [`MIN_SAMPLES_PER_PERIOD`]).
+    /// `few_samples_per_period` (fewer than [`MIN_SAMPLES_PER_PERIOD`]),
+    /// `clipped` (flat at a rail the fitted decay goes past).
     #[serde(default)]
     pub warnings: Vec<Warning>,
 }
@@ -239,6 +240,9 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
         ));
     }
     above_noise(&samples, &got, fit_offset)?;
+    if let Some(w) = clipped(&req.samples, &got, theta, req.damping) {
+        got.warnings.push(w);
+    }
     let per_period = std::f64::consts::TAU / theta;
     if per_period < MIN_SAMPLES_PER_PERIOD {
         let rate = 1.0 / req.dt_s;
@@ -253,6 +257,58 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
         });
     }
     Ok(got)
+}
+
+/// Samples at a rail (the record's largest or smallest value, repeated) at
+/// least this many before [`clipped`] looks at them.
+const MIN_RAIL_SAMPLES: usize = 3;
+
+/// `clipped` when the record sits flat at its largest or smallest value
+/// where the fitted decay goes on past it: the swings ran into the
+/// recorder's range, and their flat tops make the decay look slower (review,
+/// session 22: clipped at 0.6 of a decay starting at 1, ζ 0.0168 ± 0.0005
+/// for a true 0.02, no word of it). A rail is a value repeated at least
+/// [`MIN_RAIL_SAMPLES`] times; it is clipped when the fitted decay at those
+/// samples lies beyond it, at one of them, by more than 3 `fit_rms`. A
+/// record rounded to a coarse step repeats its largest value too, but the
+/// decay passes within about half a step (1.7 `fit_rms`) of it.
+fn clipped(y: &[f64], got: &FreeDecay, theta: f64, law: DampingLaw) -> Option<Warning> {
+    // Decay per step: viscous e^{−nτ k}, turbulent 1/(1 + l k); nτ and l
+    // are both δ·θ/2π (δ the (initial) decrement).
+    let d = got.decrement * theta / std::f64::consts::TAU;
+    let psi = got.phase_deg.to_radians();
+    let model = |k: usize| {
+        let kf = k as f64;
+        let envelope = match law {
+            DampingLaw::Viscous => (-d * kf).exp(),
+            DampingLaw::Turbulent => 1.0 / (1.0 + d * kf),
+        };
+        got.offset + got.amplitude * envelope * (kf * theta + psi).cos()
+    };
+    let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
+    for (rail, sign, side) in [(hi, 1.0, "largest"), (lo, -1.0, "smallest")] {
+        let at: Vec<usize> = (0..y.len()).filter(|&k| y[k] == rail).collect();
+        if at.len() < MIN_RAIL_SAMPLES {
+            continue;
+        }
+        let beyond = at
+            .iter()
+            .map(|&k| sign * (model(k) - rail))
+            .fold(f64::NEG_INFINITY, f64::max);
+        if beyond.is_finite() && beyond > 3.0 * got.fit_rms {
+            return Some(Warning {
+                code: "clipped".into(),
+                message: format!(
+                    "{} samples sit flat at the record's {side} value {rail} where the fitted decay goes on past it (by up to {beyond:.3e}, the fit's RMS misfit {:.3e}): the record looks clipped by the recorder's range, and the damping and frequency answered are biased (the flat tops make the decay look slower); record with a larger range, or leave the clipped swings out",
+                    at.len(),
+                    got.fit_rms
+                ),
+                plane: None,
+            });
+        }
+    }
+    None
 }
 
 /// The least `F` ([`above_noise`]) of a decay found in the samples. The

@@ -54,7 +54,7 @@ fn cases() -> Vec<Case> {
         c("truncated JSON", "POST", sessions, JSON, Body::Raw(b"{\"name\": ".to_vec()), 400, "malformed_json", None),
         c("empty body", "POST", sessions, JSON, Body::Raw(Vec::new()), 400, "malformed_json", None),
         c("trailing garbage", "POST", sessions, JSON, Body::Raw(format!("{} x", session()).into_bytes()), 400, "malformed_json", None),
-        c("bare NaN token", "POST", sessions, JSON, Body::Raw(br#"{"name": NaN}"#.to_vec()), 400, "malformed_json", None),
+        c("bare NaN token", "POST", sessions, JSON, Body::Raw(br#"{"name": NaN}"#.to_vec()), 400, "malformed_json", Some("name")),
         c("an array, not a session", "POST", sessions, JSON, Body::Json(json!([])), 422, "invalid_type", None),
         c("unknown top-level field", "POST", sessions, JSON, with(|s| s["nmae"] = json!("x")), 400, "unknown_field", Some("nmae")),
         c("unknown reading field", "POST", sessions, JSON, with(|s| s["runs"][0]["readings"][0]["phase_dg"] = json!(3)), 400, "unknown_field", Some("runs[0].readings[0].phase_dg")),

@@ -177,6 +177,21 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
             message: "invalid length: more entries than this list takes".to_string(),
             field: Some(path),
         },
+        // Not a JSON value where one goes (a bare `NaN` or `Infinity`, which
+        // JSON has no words for): still malformed, but the tracked path names
+        // the field the reader was in, as for `1e400`.
+        Category::Syntax
+            if matches!(message, "expected value" | "expected ident" | "invalid number") && !path.is_empty() =>
+        {
+            InputError {
+            kind: ErrorKind::Malformed,
+            code: "malformed_json",
+            message: format!(
+                "the body is not valid JSON: {text} (a value goes here; NaN and Infinity are not JSON numbers, and fieldbal takes finite numbers only)"
+            ),
+            field: Some(path),
+            }
+        }
         Category::Syntax | Category::Eof | Category::Io => InputError {
             kind: ErrorKind::Malformed,
             code: "malformed_json",
@@ -347,6 +362,33 @@ mod tests {
         let err = from_json::<crate::balancing::SolveOptions>(b"{} [1]").unwrap_err();
         assert_eq!(err.code, "malformed_json");
         assert_eq!(err.field, None);
+    }
+
+    /// A bare `NaN` or `Infinity` (not JSON) where a number goes is still
+    /// malformed, but names the field the reader was in, as `1e400` does
+    /// (it answered only a column, session 22's review).
+    #[test]
+    fn a_bare_nan_names_the_field_it_stands_in() {
+        for (body, field) in [
+            (r#"{"amplitude_noise_pct": NaN}"#, "amplitude_noise_pct"),
+            (r#"{"phase_noise_deg": Infinity}"#, "phase_noise_deg"),
+            (r#"{"max_mass_g": {"A": -Infinity}}"#, "max_mass_g.A"),
+            (r#"{"speeds_rpm": [1000, nan]}"#, "speeds_rpm[1]"),
+        ] {
+            let err = from_json::<crate::balancing::SolveOptions>(body.as_bytes()).unwrap_err();
+            assert_eq!(err.code, "malformed_json", "{body}: {err:?}");
+            assert_eq!(err.field.as_deref(), Some(field), "{body}: {err:?}");
+            assert!(err.message.contains("NaN"), "{body}: {}", err.message);
+        }
+        // Broken text that is not a value stays without a field.
+        for body in [
+            r#"{"amplitude_noise_pct" 2}"#,
+            r#"{"amplitude_noise_pct":1,}"#,
+            "{",
+        ] {
+            let err = from_json::<crate::balancing::SolveOptions>(body.as_bytes()).unwrap_err();
+            assert_eq!(err.code, "malformed_json", "{body}: {err:?}");
+        }
     }
 
     #[test]

@@ -681,3 +681,29 @@ fn a_clipped_decay_warns_and_a_coarsely_rounded_one_does_not() {
         }
     }
 }
+
+/// A record that swings at half the sampling rate (two samples a period,
+/// `+a, −a, +a, …`) was refused with words about damping only ("they die
+/// away too fast"), sending the technician after the wrong cause (review,
+/// session 22). The refusal now names too few samples a period, and asks for
+/// a shorter `dt_s`.
+#[test]
+fn a_record_at_half_the_sampling_rate_is_refused_naming_too_few_samples_a_period() {
+    let y: Vec<f64> = (0..100)
+        .map(|k| if k % 2 == 0 { 1.0 } else { -1.0 } * 0.99f64.powi(k))
+        .collect();
+    for law in [DampingLaw::Viscous, DampingLaw::Turbulent] {
+        let e = identify(&FreeDecayRequest {
+            samples: y.clone(),
+            dt_s: 0.01,
+            damping: law,
+            offset: None,
+        })
+        .expect_err("two samples a period");
+        assert_eq!(e.field.as_deref(), Some("samples"), "{e:?}");
+        assert!(
+            e.message.contains("two samples a period") && e.message.contains("dt_s"),
+            "{law:?}: {e:?}"
+        );
+    }
+}

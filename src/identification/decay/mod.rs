@@ -467,7 +467,7 @@ fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), Inpu
     let ratio = -l[1];
     if ratio.is_nan() || ratio <= 0.0 {
         return Err(not_oscillatory(
-            "no decaying oscillation found in the samples: they die away too fast to show one (damping near or above critical) or are not a free decay; record more samples a period, or excite a less damped mode (the fit (7.1) gave e^{-2nτ} ≤ 0)",
+            "no decaying oscillation found in the samples: they die away too fast to show one (damping near or above critical), swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), or are not a free decay; record more samples a period, or excite a less damped mode (the fit (7.1) gave e^{-2nτ} ≤ 0)",
         ));
     }
     let n = -ratio.ln() / (2.0 * tau);
@@ -475,6 +475,10 @@ fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), Inpu
     half_a_period(theta, y.len())?;
     Ok((n, theta / tau))
 }
+
+/// The turbulent law (7.2) finds no decay in the samples; the likely causes
+/// besides a record that is no free decay, with what to do.
+const NO_TURBULENT_DECAY: &str = "no decaying oscillation found in the samples of the form a0/(1 + λt) cos(ωt + ψ0): they swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), die away too fast to show one, or are not a free decay";
 
 /// Viscous damping (7.1): `λ1 = 2 e^{−nτ} cos(ω_d τ)`, `λ2 = −e^{−2nτ}`.
 ///
@@ -582,9 +586,7 @@ fn turbulent_model(y: &[f64]) -> Result<(f64, f64), InputError> {
     half_a_period(theta, y.len())?;
     let l = -p[1];
     if l.is_nan() || l <= -1.0 / y.len() as f64 {
-        return Err(not_oscillatory(
-            "no decaying oscillation found in the samples of the form a0/(1 + λt) cos(ωt + ψ0)",
-        ));
+        return Err(not_oscillatory(NO_TURBULENT_DECAY));
     }
     Ok((l, theta))
 }
@@ -689,11 +691,9 @@ fn turbulent(y: &[f64], tau: f64, with_offset: bool) -> Result<Fitted, InputErro
         .into_iter()
         .min_by(|a, b| a.3 .3.total_cmp(&b.3 .3));
     let Some((l, theta, cov, (amplitude, phase_deg, offset, fit_rms))) = best else {
-        return Err(model.err().unwrap_or_else(|| {
-            not_oscillatory(
-                "no decaying oscillation found in the samples of the form a0/(1 + λt) cos(ωt + ψ0)",
-            )
-        }));
+        return Err(model
+            .err()
+            .unwrap_or_else(|| not_oscillatory(NO_TURBULENT_DECAY)));
     };
     let w = theta / tau;
     // δ0 = λT = l·2π/(ωτ); a0, ψ0 from u_k = (1 + l k) y_k = a0 cos(kωτ + ψ0).

@@ -60,7 +60,11 @@ const identWarning = (w, tag) => h(tag, { class: `ident-warning ${w.code === "da
  */
 function identification(sol) {
   const box = h("div", { class: "identification" }, h("p", { class: "hint" }, "Looking for a critical speed in the range…"));
-  const key = JSON.stringify([state.id, state.runs.length]);
+  // Asked again whenever the job sent differs: keyed by the job's id and
+  // number of runs, a corrected run (or a changed service speed) showed the
+  // first answer again after Solve.
+  const session = sessionJson();
+  const key = JSON.stringify(session);
   const draw = (res) => {
     const lo = Math.min(...state.setup.speeds);
     const hi = Math.max(...state.setup.speeds);
@@ -85,7 +89,7 @@ function identification(sol) {
   };
   if (identification.cache && identification.cache.key === key) draw(identification.cache.res);
   else {
-    api.identifyRotor(sessionJson()).then((res) => {
+    api.identifyRotor(session).then((res) => {
       identification.cache = { key, res };
       draw(res);
     }, (err) => replace(box, h("p", { class: "hint ident-error" }, `The rotor could not be identified from these speeds: ${err.message}`)));

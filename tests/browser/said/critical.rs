@@ -4,11 +4,17 @@
 //! speeds measured out ("No critical speed found inside the speeds
 //! measured") and dropped the warning; it now shows the critical marked as
 //! extrapolated, with the service's warning under it.
+//!
+//! Then the trial run is corrected in the grid to readings of a rotor whose
+//! critical is 3600 rpm, inside the speeds, and solved again: the form showed
+//! the first answer again (it kept the identification of a job by its id and
+//! number of runs, both unchanged by a corrected run); it now asks again.
 
 use fieldbal::balancing::model::Unit;
 use serde_json::Value;
 
-use crate::harness::stand::{open_at_solve, post, Stand};
+use crate::harness::form::{field, store, type_into};
+use crate::harness::stand::{get, open_at_solve, post, Stand};
 use crate::harness::steps::js;
 
 use super::jeffcott;
@@ -58,4 +64,82 @@ pub async fn a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(sta
     );
     assert_eq!(shown[2], "critical_outside_range", "{shown}");
     assert_eq!(shown[3], Value::from(format!("⚠ {message}")), "{shown}");
+
+    a_corrected_run_is_identified_again(stand, id, &session, &speeds).await;
+}
+
+/// Correct the trial run to `zero + (trial₂ − zero₂)` of a rotor critical at
+/// 3600 rpm (its influence coefficients, over this job's zero run), solve
+/// again, and compare the page with the service's answer for the stored job.
+async fn a_corrected_run_is_identified_again(
+    stand: &Stand,
+    id: &str,
+    session: &Value,
+    speeds: &[f64],
+) {
+    let b = &stand.browser;
+    let other = jeffcott::Jeffcott::with(150.0, 3600.0, 0.05);
+    let other =
+        serde_json::to_value(jeffcott::session(&[other], speeds, Unit::UmPp, 0.0, 0)).unwrap();
+    let xy = |r: &Value| {
+        let (a, p) = (
+            r["amplitude"].as_f64().unwrap(),
+            r["phase_deg"].as_f64().unwrap().to_radians(),
+        );
+        (a * p.cos(), a * p.sin())
+    };
+    b.click("nav [data-step=\"runs\"]").await;
+    b.click("#step-runs th.run[data-run=\"trial\"] button.correct")
+        .await;
+    for i in 0..speeds.len() {
+        let z = xy(&session["runs"][0]["readings"][i]);
+        let z2 = xy(&other["runs"][0]["readings"][i]);
+        let t2 = xy(&other["runs"][1]["readings"][i]);
+        let (x, y) = (z.0 + t2.0 - z2.0, z.1 + t2.1 - z2.1);
+        let path = format!("runs[1].readings[{i}]");
+        type_into(
+            b,
+            &field(&format!("{path}.amplitude")),
+            &format!("{:.4}", x.hypot(y)),
+        )
+        .await;
+        let phase = y.atan2(x).to_degrees().rem_euclid(360.0);
+        type_into(
+            b,
+            &field(&format!("{path}.phase_deg")),
+            &format!("{phase:.2}"),
+        )
+        .await;
+    }
+    store(b).await;
+    let stored = get(stand, &format!("/api/v1/sessions/{id}")).await;
+    let stored = stored.get("session").cloned().unwrap_or(stored);
+    let said = post(
+        stand,
+        "/api/v1/identify/rotor",
+        serde_json::json!({ "session": stored }),
+    )
+    .await;
+    let critical = said["results"][0]["critical_speed_rpm"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("a result: {said}"));
+    assert!((critical - 3600.0).abs() < 20.0, "{said}");
+
+    b.click("nav [data-step=\"solve\"]").await;
+    b.click("#step-solve button.solve").await;
+    b.wait_until(
+        "the identification is drawn again",
+        "const x = document.querySelector('#step-solve .identification'); return !!x && !x.textContent.startsWith('Looking')",
+    )
+    .await;
+    let shown: Value = js(
+        b,
+        "const r = document.querySelector('#step-solve .identification tr.ident-result'); return [r.classList.contains('outside'), r.querySelector('td.critical').textContent]",
+    )
+    .await;
+    assert_eq!(
+        shown,
+        serde_json::json!([false, format!("{critical:.0}")]),
+        "the corrected job's critical, as the service finds it"
+    );
 }

@@ -136,6 +136,11 @@ async function machinePage(root, id, go) {
   // The latest version's warnings; the page is whole without them.
   const latest = coefficients.length ? await api.getCoefficients(id).catch(() => null) : null;
   const units = jobUnits(sessions);
+  // The jobs a version was pooled from, by name (a deleted one by its id):
+  // the table gave only their number, and a warning naming jobs could not
+  // be matched to the version.
+  const jobName = new Map(sessions.map((x) => [x.id, x.name || x.id]));
+  const fromJobs = (ids) => `${ids.length}${ids.length ? `: ${ids.map((i) => `“${jobName.get(i) || i}”`).join(", ")}` : ""}`;
   const inUnit = (x, a, b) => `${fmt(a, 1)}, ${fmt(b, 1)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
   replace(root,
     h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),
@@ -164,7 +169,7 @@ async function machinePage(root, id, go) {
     coefficients.length === 0 ? h("p", { class: "hint" }, "None stored yet. Solve a job with trial runs, then store the coefficients from it: later jobs can trim with only a reference run.")
       : h("table", { class: "coeff-versions" },
         h("thead", {}, h("tr", {}, h("th", {}, "Version"), h("th", {}, "Stored"), h("th", {}, "From jobs"))),
-        h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, storedAt(c.created_at)), h("td", {}, String((c.sessions || []).length)))))),
+        h("tbody", {}, coefficients.map((c) => h("tr", {}, h("td", {}, String(c.version)), h("td", {}, storedAt(c.created_at)), h("td", { class: "from-jobs" }, fromJobs(c.sessions || [])))))),
     poolWarnings(latest, sessions),
   );
 }

@@ -4,6 +4,9 @@
 //! service pools them with the warning `coefficients_disagree` naming both.
 //! The form stored the version and showed the page again as if all were
 //! well; a trim job from those coefficients then started from them unwarned.
+//! The table of coefficient versions gave only how many jobs a version was
+//! pooled from ("2"): it now names them, so that the jobs the warning names
+//! can be told to be those of the version.
 
 use serde_json::{json, Value};
 
@@ -62,4 +65,14 @@ pub async fn coefficients_from_jobs_that_disagree_say_so(stand: &Stand) {
     assert_eq!(shown[0][2], warning["message"], "{shown}");
     let heading = b.text("#step-machines .pool-warnings h4").await;
     assert!(heading.contains("version 1"), "{heading}");
+    let version: Value = js(
+        b,
+        "return [...document.querySelectorAll('#step-machines table.coeff-versions tbody tr td')].map((td) => td.textContent)",
+    )
+    .await;
+    assert_eq!(version[0], "1", "{version}");
+    assert_eq!(
+        version[2], "2: “pump in March”, “pump in June”",
+        "the jobs it was pooled from, by name: {version}"
+    );
 }

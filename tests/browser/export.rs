@@ -104,6 +104,46 @@ async fn a_typed_session_exports_as_the_same_json_and_its_readings_and_results_a
             .count(),
         4
     );
+
+    // A trial weight weighed to the milligram, at an angle read to the
+    // hundredth of a degree: the readings file has them as stored (it gave
+    // the grid header's one decimal, 12.3 g at 123.5°).
+    let mut precise = session.clone();
+    precise["name"] = serde_json::json!("precise trial");
+    precise["runs"][1]["weights"][0] =
+        serde_json::json!({"plane": "inboard", "mass_g": 12.345, "angle_deg": 123.45});
+    let created: Value = reqwest::Client::new()
+        .post(server.url("/api/v1/sessions"))
+        .json(&precise)
+        .send()
+        .await
+        .unwrap()
+        .json()
+        .await
+        .unwrap();
+    let id = created["id"].as_str().expect("stored");
+    b.open_fresh(&server.url(&format!("/#session={id}&step=solve")))
+        .await;
+    b.wait_for("#step-solve button.solve").await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click("button.export-readings").await;
+    let readings = String::from_utf8(b.downloaded("precise-trial-readings.csv").await).unwrap();
+    let trial: Vec<&str> = readings
+        .lines()
+        .filter(|l| {
+            l.starts_with(&format!(
+                "\"{}\"",
+                precise["runs"][1]["id"].as_str().unwrap()
+            ))
+        })
+        .collect();
+    assert!(!trial.is_empty(), "{readings}");
+    for line in trial {
+        assert!(
+            line.contains("\"inboard: 12.345 g at 123.45°\""),
+            "the weight as stored: {line}"
+        );
+    }
     b.close().await;
     server.shutdown().await;
 }

@@ -29,9 +29,9 @@ function angleWords() {
   return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
 }
 
-export function weightsText(weights) {
+export function weightsText(weights, num = (x) => fmt(x, 1)) {
   if (weights.length === 0) return "no weights (as found)";
-  return weights.map((w) => `${w.plane}: ${fmt(w.mass_g, 1)} g at ${fmt(w.angle_deg, 1)}°`).join(", ");
+  return weights.map((w) => `${w.plane}: ${num(w.mass_g)} g at ${num(w.angle_deg)}°`).join(", ");
 }
 
 /** The last stored run with weights: the one whose weights may still be on the rotor. */

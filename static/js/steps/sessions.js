@@ -3,7 +3,7 @@
 
 import { h, replace, download, fileStem } from "../page/dom.js";
 import { banner } from "../page/fields.js";
-import { storedAt } from "../page/num.js";
+import { storedAt, fmtReading } from "../page/num.js";
 import { pagedList } from "../page/paged.js";
 import { api } from "../job/api.js";
 import { state, sessionJson, rows, readingFor } from "../job/state.js";
@@ -36,7 +36,9 @@ export function readingsCsv() {
   for (const run of state.runs.filter((r) => r.stored)) {
     for (const row of rows()) {
       const r = readingFor(run, row);
-      if (r) out.push([run.id, weightsText(run.weights), r.speed_rpm, r.sensor, units.get(r.sensor), r.amplitude, r.phase_deg]);
+      // The weights as stored (12.345 g at 123.45°): rounded for the grid's
+      // header to one decimal, the file said 12.3 g at 123.5°.
+      if (r) out.push([run.id, weightsText(run.weights, fmtReading), r.speed_rpm, r.sensor, units.get(r.sensor), r.amplitude, r.phase_deg]);
     }
   }
   return csv(out);

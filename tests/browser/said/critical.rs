@@ -64,6 +64,9 @@ pub async fn a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(sta
     );
     assert_eq!(shown[2], "critical_outside_range", "{shown}");
     assert_eq!(shown[3], Value::from(format!("⚠ {message}")), "{shown}");
+    // The table with its longest cells (the extrapolated note, the margin
+    // with API 684's) and the warning row fits a tablet held upright.
+    crate::harness::steps::fits_a_tablet(b, "identification").await;
 
     a_corrected_run_is_identified_again(stand, id, &session, &speeds).await;
 }

@@ -43,7 +43,9 @@ function trend(sessions, units) {
   if (jobs.length === 0) return h("p", { class: "hint" }, "No solved job yet: the trend starts with the first.");
   const W = 360;
   const H = 150;
-  const top = Math.max(...jobs.map((j) => j.summary.rms_before), 1e-9);
+  // Scaled to the largest of both lines: a job can be predicted worse after
+  // than before (a min-max or bounded answer), and its point stays inside.
+  const top = Math.max(...jobs.flatMap((j) => [j.summary.rms_before, j.summary.rms_after]).filter(Number.isFinite), 1e-9);
   const x = (i) => (jobs.length === 1 ? W / 2 : 40 + (i * (W - 80)) / (jobs.length - 1));
   const y = (v) => 10 + (1 - v / top) * (H - 60);
   const line = (key, colour) => [

@@ -58,6 +58,59 @@ pub async fn the_machine_page_shows_vibration_before_and_after_per_job(stand: &S
     crate::harness::job::scroll_to(b, "h3").await;
     shots(b, "job-machine-jobs").await;
     crate::harness::steps::fits_a_tablet(b, "machine jobs").await;
+    a_job_worse_after_than_before_stays_inside_the_trend(b).await;
+}
+
+/// A job whose predicted vibration after is larger than before (a min-max
+/// or bounded answer can leave more RMS than it found) is drawn inside the
+/// plot: the trend scaled to the largest "before" only and drew such a
+/// point above the figure. The page's next machine answer is given three
+/// times each job's "before" as its "after" (the page's `fetch` wraps the
+/// real answer once, then is put back), and every point must lie within
+/// the plot's height.
+async fn a_job_worse_after_than_before_stays_inside_the_trend(b: &crate::harness::Browser) {
+    js(
+        b,
+        "const real = window.fetch; \
+         window.fetch = (url, init) => { \
+           const get = !init || !init.method || init.method === 'GET'; \
+           if (get && /\\/api\\/v1\\/machines\\/PUMP-1(\\?|$)/.test(String(url))) { \
+             window.fetch = real; \
+             return real(url, init).then(async (r) => { \
+               const m = await r.json(); \
+               m.sessions.forEach((s) => { if (s.summary) s.summary.rms_after = 3 * s.summary.rms_before; }); \
+               const h = new Headers(r.headers); h.delete('content-length'); \
+               return new Response(JSON.stringify(m), { status: r.status, headers: h }); }); } \
+           return real(url, init); }; \
+         document.querySelector('figure.trend-fig').remove(); \
+         return true",
+    )
+    .await;
+    // The old trend is gone, so the one waited for is drawn from the answer.
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.wait_for("svg.trend circle").await;
+    let inside = js(
+        b,
+        "const svg = document.querySelector('svg.trend'); const h = svg.viewBox.baseVal.height; \
+         const ys = [...svg.querySelectorAll('circle')].map((c) => Number(c.getAttribute('cy'))); \
+         return [ys.length > 0 && ys.every((y) => y >= 0 && y <= h), ys, h, typeof window.fetch]",
+    )
+    .await;
+    assert_eq!(
+        inside[0],
+        json!(true),
+        "every point inside the plot: {inside}"
+    );
+    // The real answer again, as the scenes after this one expect.
+    js(
+        b,
+        "document.querySelector('figure.trend-fig').remove(); return true",
+    )
+    .await;
+    b.click("nav [data-step=\"machines\"]").await;
+    b.click("button.open-machine[data-id=\"PUMP-1\"]").await;
+    b.wait_for("svg.trend circle").await;
 }
 
 /// Under each point of the trend, the date its job was stored (the time too

@@ -514,3 +514,48 @@ async fn a_machines_jobs_say_the_unit_of_their_summary() {
         assert!(job.get(key).is_none(), "no solution, no {key}: {job}");
     }
 }
+
+/// A session holding only its reference run adds nothing to a pool (no trial
+/// to difference against it), yet was listed among the version's sessions
+/// with no word, as if its readings had been used (qa22 noticed). The
+/// version now warns `no_trial_runs` naming it; the coefficients are those
+/// of the other sessions alone.
+#[tokio::test]
+async fn a_session_without_trial_runs_in_a_pool_is_named_as_adding_nothing() {
+    let (_dir, server, client) = fresh_server().await;
+    let rotor = Rotor::new();
+    post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "M-REF"}),
+    )
+    .await;
+    let full = store(&client, &server, &job_session(&rotor, "M-REF", true, 41)).await;
+    let reference = store(&client, &server, &job_session(&rotor, "M-REF", false, 42)).await;
+    let url = server.url("/api/v1/machines/M-REF/coefficients");
+    let (status, _, alone) = post(&client, &url, &json!({"sessions": [full]})).await;
+    assert_eq!(status, 201, "{alone}");
+    assert!(
+        alone["warnings"]
+            .as_array()
+            .map_or(true, |w| w.iter().all(|x| x["code"] != "no_trial_runs")),
+        "{alone}"
+    );
+    let (status, _, both) = post(&client, &url, &json!({"sessions": [full, reference]})).await;
+    assert_eq!(status, 201, "{both}");
+    let said: Vec<&Value> = both["warnings"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter(|x| x["code"] == "no_trial_runs")
+        .collect();
+    assert_eq!(said.len(), 1, "{both}");
+    assert!(
+        said[0]["message"].as_str().unwrap().contains(&reference),
+        "names the session: {both}"
+    );
+    assert_eq!(
+        both["influence_coefficients"], alone["influence_coefficients"],
+        "the same coefficients as without it"
+    );
+}

@@ -265,6 +265,19 @@ pub fn pool_checked(
             plane: None,
         });
     }
+    // A session with no trial run has nothing to difference its reference
+    // against: it adds nothing to the coefficients, though it is listed.
+    for (s, name) in names.iter().enumerate() {
+        if !owner.contains(&s) {
+            warnings.push(Warning {
+                code: "no_trial_runs".into(),
+                message: format!(
+                    "session '{name}' has no trial run (only its reference run), so it adds nothing to these coefficients; pool it once it has a trial run in each plane, or leave it out"
+                ),
+                plane: None,
+            });
+        }
+    }
     let exclude = options.exclude_disagreeing.unwrap_or(false);
     let used: Vec<usize> = (0..checked.len())
         .filter(|s| !(exclude && bad.contains(s)))

@@ -538,7 +538,7 @@ async fn a_session_without_trial_runs_in_a_pool_is_named_as_adding_nothing() {
     assert!(
         alone["warnings"]
             .as_array()
-            .map_or(true, |w| w.iter().all(|x| x["code"] != "no_trial_runs")),
+            .is_none_or(|w| w.iter().all(|x| x["code"] != "no_trial_runs")),
         "{alone}"
     );
     let (status, _, both) = post(&client, &url, &json!({"sessions": [full, reference]})).await;

@@ -69,30 +69,15 @@ pub fn run_etag(version: i64) -> String {
 /// under which a weak tag (`W/"v3"`) matches nothing, and a tag matches
 /// only as the ETag was given, character for character.
 pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiError> {
-    let Some(value) = headers.get(header::IF_MATCH) else {
-        return Ok(None);
-    };
-    let text = value.to_str().map_err(|_| {
-        ApiError::new(
-            StatusCode::BAD_REQUEST,
-            "invalid_header",
-            "If-Match is not ASCII",
-        )
-        .with_field("If-Match")
-    })?;
-    if text.trim() == "*" {
-        return Ok(None);
-    }
-    Ok(Some(
-        text.split(',')
+    Ok(if_match_tags(headers)?.map(|tags| {
+        tags.iter()
             .filter_map(|t| {
-                let t = t.trim();
                 let v = t.strip_prefix("\"v")?.strip_suffix('"')?.parse().ok()?;
                 // Character for character: `"v01"` and `"v+1"` are not `"v1"`.
-                (run_etag(v) == t).then_some(v)
+                (run_etag(v) == *t).then_some(v)
             })
-            .collect(),
-    ))
+            .collect()
+    }))
 }
 
 /// The entity tags `If-Match` names, as given: `None` without the header

@@ -47,6 +47,7 @@ static ASSETS: &[Asset] = &[
     asset!("js/plots/plots.js", JS),
     asset!("js/plots/polar.js", JS),
     asset!("js/steps/csv.js", JS),
+    asset!("js/steps/decay.js", JS),
     asset!("js/steps/machines.js", JS),
     asset!("js/steps/options.js", JS),
     asset!("js/steps/picture.js", JS),

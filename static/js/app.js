@@ -6,7 +6,8 @@
 // The modules beside it: page/ builds the page (elements, inputs that check
 // themselves, numbers as typed and shown); job/ holds the job (its state, what
 // is kept in this browser, the service's API and its access token); steps/ has
-// a module per step (set-up, runs, solve, report, sessions, machines) and the
+// a module per step (set-up, runs, solve, report, sessions, machines, the
+// free-decay identification) and the
 // parts of a step (CSV readings, trial weight, solve options, conventions
 // picture); answer/ shows a solve's answer in words and pictures; plots/ draws
 // the polar, Bode and Nyquist plots.
@@ -21,8 +22,9 @@ import { renderSolve } from "./steps/solve.js";
 import { renderReport } from "./steps/report.js";
 import { renderSessions } from "./steps/sessions.js";
 import { renderMachines } from "./steps/machines.js";
+import { renderDecay } from "./steps/decay.js";
 
-const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines"];
+const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines", "decay"];
 let current = "setup";
 
 /** The address of a step of the job shown now. */
@@ -65,6 +67,7 @@ function show(step, push = true) {
   }
   if (step === "solve") renderSolve(root, (weights, fromRun) => { newDraft("check", weights, fromRun); show("runs"); });
   if (step === "sessions") renderSessions(root, (id) => mayLeave(id) && open(id), open);
+  if (step === "decay") renderDecay(root);
   if (step === "machines") renderMachines(root, { openSession: (id) => mayLeave(id) && open(id), newJob: (setup, from) => mayLeave(null) && startJob(setup, from), showMachine });
   // The report is kept current so that printing from any step prints it.
   renderReport($("#step-report"));

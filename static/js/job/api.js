@@ -77,6 +77,7 @@ export const api = {
   solveOnce: (session, options) => call("POST", "/solve", { session, options: options || {} }),
   trialWeights: (session, options) => call("POST", "/trial-weights", { session, options: options || {} }),
   identifyRotor: (session, options) => call("POST", "/identify/rotor", { session, options: options || {} }),
+  identifyFreeDecay: (body) => call("POST", "/identify/free-decay", body),
   listMachines: (limit = 100, offset = 0) => call("GET", `/machines?limit=${limit}&offset=${offset}`),
   getMachine: (id) => call("GET", `/machines/${encodeURIComponent(id)}`),
   createMachine: (machine) => call("POST", "/machines", machine),

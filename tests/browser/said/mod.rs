@@ -13,13 +13,15 @@
 //! repeated samples say so in the grid (`samples`); a mass limit that a twin
 //! plane makes up for is not called costly (`bound`); a store whose answer
 //! was lost is not taken for another tab's, nor stored twice (`retry`); what
-//! a technician read walking a job through the form (`walk`).
+//! a technician read walking a job through the form (`walk`); a free decay
+//! pasted on its page is answered as the service answers it (`decay`).
 
 mod bound;
 mod conventions;
 mod critical;
 mod damping;
 mod dates;
+mod decay;
 mod pooled;
 mod retry;
 mod samples;
@@ -40,6 +42,8 @@ use crate::harness::stand::Stand;
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_form_says_what_the_service_means() {
     let mut stand = Stand::start().await;
+    decay::a_pasted_free_decay_is_answered_as_the_service_says(&stand).await;
+    stand.renew().await;
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
     stand.renew().await;
     critical::a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(&stand).await;

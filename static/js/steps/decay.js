@@ -1,0 +1,146 @@
+// Free decay: the natural frequency and damping of a rotor or structure from
+// a record of its free decay (a tap test, a coast of the shaft held still),
+// by `POST /api/v1/identify/free-decay` (method §7). Samples are pasted as a
+// column from a spreadsheet or a row separated by commas, spaces or tabs;
+// the service fits the decay and says what it could and could not tell.
+
+import { h, replace, $ } from "../page/dom.js";
+import { numberInput, selectInput, mark, clearMarks, markServerError, banner } from "../page/fields.js";
+import { parseNumber } from "../page/num.js";
+import { api } from "../job/api.js";
+
+// What was typed, kept while other steps are visited.
+const typed = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null };
+
+const LAWS = [
+  ["viscous", "Viscous — damping force ∝ velocity: the amplitude decays exponentially (oil film, material)"],
+  ["turbulent", "Turbulent — damping force ∝ velocity²: the amplitude decays as 1/(1 + λt) (air, fluid drag)"],
+];
+
+/**
+ * The samples of pasted text, or `{ error }` naming the first bad one. A
+ * column (one a line) or a row separated by tabs, spaces or ";" takes a
+ * decimal comma as the runs grid does (2,5); text with no such separators,
+ * or with ", " between numbers, is split at its commas.
+ */
+export function parseSamples(text) {
+  const t = String(text || "").trim();
+  if (t === "") return { error: "paste the samples, one a line or separated by commas, spaces or tabs" };
+  const commaSeparated = !/[\s;]/.test(t) || /,\s/.test(t);
+  const tokens = t.split(commaSeparated ? /[\s,;]+/ : /[\s;]+/).filter((x) => x !== "");
+  const values = [];
+  for (const [k, token] of tokens.entries()) {
+    const r = parseNumber(token);
+    if (r.error) return { error: `sample ${k + 1} (${token}): ${r.error}` };
+    values.push(r.value);
+  }
+  return { values };
+}
+
+/** A number with `digits` significant digits, as plain text. */
+function sig(x, digits = 4) {
+  if (x === null || x === undefined || !Number.isFinite(x)) return "–";
+  return String(Number(x.toPrecision(digits)));
+}
+
+/** `x ± r` when a resolution is given. */
+function withResolution(x, r, unit = "") {
+  const u = unit ? ` ${unit}` : "";
+  return Number.isFinite(r) ? `${sig(x, 5)}${u} ± ${sig(r, 2)}${u}` : `${sig(x, 5)}${u}`;
+}
+
+function answerTable(a) {
+  const undamped = a.undamped_frequency_hz ?? a.frequency_hz;
+  const rows = [
+    ["undamped-hz", "Undamped natural frequency", withResolution(undamped, a.frequency_resolution_hz, "Hz")],
+    ["undamped-rpm", "… in rpm (× 60)", withResolution(undamped * 60, Number.isFinite(a.frequency_resolution_hz) ? a.frequency_resolution_hz * 60 : undefined, "rpm")],
+    ["damped-hz", "Damped frequency (what a spectrum shows)", `${sig(a.damped_frequency_hz, 5)} Hz`],
+    ["damped-rpm", "… in rpm (× 60)", `${sig(a.damped_frequency_hz * 60, 5)} rpm`],
+  ];
+  if (Number.isFinite(a.damping_ratio)) {
+    const zeta = a.damping_ratio_bound === "upper"
+      ? `≤ ${sig(a.damping_ratio, 3)} (not resolved from zero)`
+      : withResolution(a.damping_ratio, a.damping_ratio_resolution);
+    rows.push(["zeta", "Damping ratio ζ", zeta]);
+  } else {
+    rows.push(["decrement", "Initial decrement δ₀ (turbulent: no single ζ)", sig(a.decrement, 4)]);
+  }
+  rows.push(["offset", "Offset (samples' unit)", sig(a.offset, 5)]);
+  rows.push(["fit-rms", "Fit RMS (samples' unit)", sig(a.fit_rms, 3)]);
+  return h("table", { class: "decay-answer" },
+    h("tbody", {}, rows.map(([cls, label, value]) => h("tr", { class: cls }, h("th", { scope: "row" }, label), h("td", {}, value)))));
+}
+
+function answerView(a) {
+  const warnings = Array.isArray(a.warnings) ? a.warnings : [];
+  return h("div", { class: "decay-result", role: "status" },
+    h("h3", {}, "Answer"),
+    answerTable(a),
+    warnings.length
+      ? h("div", { class: "warnings decay-warnings", role: "alert" },
+        h("ul", {}, warnings.map((w) => h("li", { class: String(w.code || "").replace(/_/g, "-") }, `⚠ ${w.message || w.code}`))))
+      : null);
+}
+
+/** Draw the free-decay page in `root`. */
+export function renderDecay(root) {
+  const samples = h("textarea", {
+    rows: 8, cols: 28, spellcheck: "false", autocomplete: "off",
+    dataset: { field: "samples" }, "aria-label": "Samples",
+    placeholder: "0.95\n0.31\n-0.62\n…",
+    oninput: () => { typed.samples = samples.value; mark(samples, ""); },
+  });
+  samples.value = typed.samples;
+  const result = h("div", { class: "decay-out" }, typed.answer ? answerView(typed.answer) : null);
+  const run = h("button", { type: "submit", class: "primary identify" }, "Identify");
+  const form = h("form", { class: "decay-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); identify(); } },
+    h("div", { class: "decay-fields" },
+      h("label", {}, h("span", {}, "Samples (a column pasted from a spreadsheet, or separated by commas, spaces or tabs)"),
+        h("span", { class: "field samples-field" }, samples, h("span", { class: "msg", role: "alert" }))),
+      h("div", { class: "decay-side" },
+        h("label", {}, h("span", {}, "Sampling step dt_s, seconds"),
+          numberInput({ field: "dt_s", kind: "dt", value: typed.dt_s, label: "Sampling step, seconds", placeholder: "0.005", size: 9, onValue: (v) => { typed.dt_s = v; } })),
+        h("label", {}, h("span", {}, "Damping law"),
+          selectInput({ field: "damping", value: typed.damping, choices: LAWS.map(([v, text]) => [v, text.split(" — ")[0]]), label: "Damping law", onValue: (v) => { typed.damping = v; explain(); } })),
+        h("p", { class: "hint law" }),
+        h("label", {}, h("span", {}, "Offset (optional, samples' unit; empty: fitted)"),
+          numberInput({ field: "offset", kind: "offset", value: typed.offset, required: false, label: "Offset, optional", size: 9, onValue: (v) => { typed.offset = v; } })),
+        run)),
+  );
+  const explain = () => { $(".law", form).textContent = LAWS.find(([v]) => v === typed.damping)[1]; };
+  explain();
+
+  async function identify() {
+    clearMarks(root);
+    mark(samples, "");
+    banner(root, "error", "");
+    const parsed = parseSamples(samples.value);
+    if (parsed.error) {
+      mark(samples, parsed.error);
+      return samples.focus();
+    }
+    const dt = $('[data-field="dt_s"]', root);
+    if (!dt.validateNow()) return dt.focus();
+    const off = $('[data-field="offset"]', root);
+    if (!off.validateNow()) return off.focus();
+    const body = { samples: parsed.values, dt_s: typed.dt_s, damping: typed.damping };
+    if (typed.offset !== null) body.offset = typed.offset;
+    run.disabled = true;
+    try {
+      typed.answer = await api.identifyFreeDecay(body);
+      replace(result, answerView(typed.answer));
+    } catch (err) {
+      typed.answer = null;
+      replace(result);
+      if (!markServerError(err)) banner(root, "error", err.message);
+    } finally {
+      run.disabled = false;
+    }
+  }
+
+  replace(root,
+    h("h2", {}, "Free decay: natural frequency and damping"),
+    h("p", { class: "note" }, "From a record of a free decay (tap the machine, or let a shaft swing out) at a constant sampling step: the natural frequency and damping the service fits to it (method §7). Works offline, nothing is stored."),
+    form,
+    result);
+}

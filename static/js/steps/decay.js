@@ -76,6 +76,7 @@ function answerView(a) {
   return h("div", { class: "decay-result", role: "status" },
     h("h3", {}, "Answer"),
     answerTable(a),
+    h("p", { class: "hint decay-pm" }, "± is the 95 % half-width of the figure, from the fit and the samples' scatter about it."),
     warnings.length
       ? h("div", { class: "warnings decay-warnings", role: "alert" },
         h("ul", {}, warnings.map((w) => h("li", { class: String(w.code || "").replace(/_/g, "-") }, `⚠ ${w.message || w.code}`))))

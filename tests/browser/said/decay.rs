@@ -55,6 +55,9 @@ pub async fn a_pasted_free_decay_is_answered_as_the_service_says(stand: &Stand) 
     choose(b, "select[data-field=\"damping\"]", "viscous").await;
     b.click("#step-decay button.identify").await;
     b.wait_for("#step-decay table.decay-answer").await;
+    // What ± means is said (the service's resolutions are 95 % half-widths).
+    let pm = b.text("#step-decay .decay-pm").await;
+    assert!(pm.contains("95 % half-width"), "{pm}");
     let cell = |row: &str| {
         format!("return document.querySelector('#step-decay table.decay-answer tr.{row} td').textContent")
     };

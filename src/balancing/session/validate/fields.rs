@@ -226,7 +226,13 @@ pub(super) fn unique_ids<'s>(
 
 /// `x` (already checked positive) is at least `min`, else a value error
 /// "`what` must be at least `min` `unit`, got `x`".
-fn at_least(field: &str, x: f64, min: f64, what: &str, unit: &str) -> Result<(), InputError> {
+pub(super) fn at_least(
+    field: &str,
+    x: f64,
+    min: f64,
+    what: &str,
+    unit: &str,
+) -> Result<(), InputError> {
     if x < min {
         return Err(invalid(
             field,

@@ -8,7 +8,7 @@
 
 use std::collections::HashMap;
 
-use super::fields::{check_amplitude, check_angle, check_positive};
+use super::fields::{at_least, check_amplitude, check_angle, check_positive};
 use super::{
     IdIndex, MAX_AMPLITUDE, MAX_ANGLE_DEG, MAX_SPEED_RPM, MIN_AMPLITUDE, MIN_SERVICE_SPEED_RPM,
 };
@@ -50,16 +50,13 @@ fn check_reading(
         "the speed",
     )?;
     // As a rotor's service speed (fuzzing, session 21: 1e-320 rpm was read).
-    if r.speed_rpm < MIN_SERVICE_SPEED_RPM {
-        return Err(InputError::invalid(
-            "invalid_value",
-            format!("{}.speed_rpm", f()),
-            format!(
-                "the speed must be at least {MIN_SERVICE_SPEED_RPM} rpm, got {}",
-                crate::balancing::error::shown(r.speed_rpm)
-            ),
-        ));
-    }
+    at_least(
+        &format!("{}.speed_rpm", f()),
+        r.speed_rpm,
+        MIN_SERVICE_SPEED_RPM,
+        "the speed",
+        "rpm",
+    )?;
     let sensor = match ids.get(hint) {
         // Ids are unique (checked before), so a match is the one the map gives.
         Some(s) if s.id == r.sensor => hint,

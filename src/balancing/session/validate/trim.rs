@@ -2,7 +2,7 @@
 //! run's `purpose`: records for the client that reopens a job, stored and
 //! given back unchanged, so checked only for what would make them mean nothing.
 
-use super::fields::{check_angle, check_machine_id, check_positive, invalid};
+use super::fields::{at_least, check_angle, check_machine_id, check_positive, invalid};
 use super::{IdIndex, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
 use crate::balancing::error::InputError;
 use crate::balancing::job::supplied::{check_covariance, check_unit};
@@ -61,15 +61,13 @@ pub(super) fn check_trim(
                 )?;
                 // From 1 rpm, as a reading's: a coefficient at a slower
                 // speed pairs with no reading (1e-320 rpm was stored).
-                if c.speed_rpm < super::MIN_SERVICE_SPEED_RPM {
-                    return Err(invalid(
-                        f("speed_rpm"),
-                        format!(
-                            "a coefficient's speed is from {} rpm, as a reading's",
-                            super::MIN_SERVICE_SPEED_RPM
-                        ),
-                    ));
-                }
+                at_least(
+                    &f("speed_rpm"),
+                    c.speed_rpm,
+                    super::MIN_SERVICE_SPEED_RPM,
+                    "a coefficient's speed, as a reading's,",
+                    "rpm",
+                )?;
                 check_positive(
                     || f("amplitude_per_g"),
                     c.amplitude_per_g,

@@ -188,7 +188,7 @@ pub struct PoolRequest {
     params(("id" = String, Path, description = "Machine id")),
     request_body = PoolRequest,
     responses(
-        (status = 201, description = "A new coefficient version pooled from the sessions", body = StoredCoefficients),
+        (status = 201, description = "A new coefficient version pooled from the sessions, with `warnings`: `coefficients_disagree` (sessions whose coefficients disagree with the others beyond their noise), `plane_undetermined` (a plane whose pooled trials moved no reading, with `plane`), `no_trial_runs` (a listed session with its reference run alone, which adds nothing)", body = StoredCoefficients),
         MalformedJson,
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),

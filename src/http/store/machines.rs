@@ -46,9 +46,6 @@ fn no_machine(id: &str) -> ApiError {
 /// The checks of a posted machine (its rotor as in a session).
 fn validate(m: &NewMachine) -> Result<(), InputError> {
     super::text::check_machine(m)?;
-    // The one rule of what a machine id is (length, not blank, no control
-    // character), as a session's `machine` and a trim's are checked.
-    crate::balancing::validate::check_machine_id(|| "id".into(), &m.id)?;
     if m.name
         .as_ref()
         .is_some_and(|x| x.trim().is_empty() || x.chars().count() > 200)

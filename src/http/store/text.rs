@@ -51,7 +51,9 @@ pub fn check_new_run(r: &Run) -> Result<(), InputError> {
 
 /// The strings a posted machine defines.
 pub fn check_machine(m: &NewMachine) -> Result<(), InputError> {
-    check_id(|| "id".into(), &m.id)?;
+    // The core's one rule of what a machine id is (1 to 64 characters, not
+    // blank, no control character), as a session's `machine` is checked.
+    validate::check_machine_id(|| "id".into(), &m.id)?;
     if let Some(n) = &m.name {
         check_text(|| "name".into(), n)?;
     }

@@ -126,8 +126,13 @@ export function fmt(x, digits = 1) {
  * 1234.5 as 1235, so the grid disagreed with the analyser.
  */
 export function fmtReading(x) {
+  return sig(x, 6);
+}
+
+/** `x` to `digits` significant digits, shortest form ("–" for no number). */
+export function sig(x, digits = 4) {
   if (x === null || x === undefined || !Number.isFinite(x)) return "–";
-  return String(Number(x.toPrecision(6)));
+  return String(Number(x.toPrecision(digits)));
 }
 
 /** An angle for people, 0 to 360 with one decimal. */

@@ -6,7 +6,7 @@
 
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, mark, clearMarks, markServerError, banner } from "../page/fields.js";
-import { parseNumber } from "../page/num.js";
+import { parseNumber, sig } from "../page/num.js";
 import { api } from "../job/api.js";
 
 // What was typed, kept while other steps are visited.
@@ -35,12 +35,6 @@ export function parseSamples(text) {
     values.push(r.value);
   }
   return { values };
-}
-
-/** A number with `digits` significant digits, as plain text. */
-function sig(x, digits = 4) {
-  if (x === null || x === undefined || !Number.isFinite(x)) return "–";
-  return String(Number(x.toPrecision(digits)));
 }
 
 /** `x ± r` when a resolution is given. */

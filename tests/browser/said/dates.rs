@@ -33,9 +33,16 @@ pub async fn a_solution_date_is_in_the_format_of_the_lists(stand: &Stand) {
     let listed = get(stand, "/api/v1/sessions").await;
     let stored = listed["sessions"][0]["created_at"].as_str().unwrap();
     b.click("nav [data-step=\"sessions\"]").await;
+    // Waited for by its time, not for any row: a row drawn before the list
+    // was read again (a placeholder, or the list as it was) failed the
+    // assertion below now and then under load.
+    let want = as_listed(stored);
     b.wait_until(
         "the session is listed",
-        "return !!document.querySelector('#step-sessions tbody tr')",
+        &format!(
+            "const r = document.querySelector('#step-sessions tbody tr'); return !!r && r.textContent.includes({})",
+            serde_json::to_string(&want).unwrap()
+        ),
     )
     .await;
     let row = b.text("#step-sessions tbody tr").await;

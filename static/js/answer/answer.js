@@ -5,7 +5,8 @@
 
 import { h } from "../page/dom.js";
 import { fmt, fmtAngle, unitOrMix, unitLabel } from "../page/num.js";
-import { state } from "../job/state.js";
+import { state, readingFor } from "../job/state.js";
+import { sensorUnits } from "../steps/options.js";
 import { correctionsTable, summaryBox, residualTable, residualNote, warningsBox, phaseWords, angleWords } from "../steps/solve.js";
 import { doubt } from "./words.js";
 import { planePicture } from "./planes.js";
@@ -19,16 +20,45 @@ function baseRun(sol) {
 
 /** Within tolerance: the largest reading of the base run against the limit the technician set. */
 export function verdict(sol) {
-  const limit = state.options.limit;
   const run = baseRun(sol);
+  if (!run) return "";
+  if (sensorUnits().length > 1) return verdictByUnit(sol, run);
+  const limit = state.options.limit;
   const max = sol.summary ? sol.summary.max_before : null;
-  if (!limit || max === null || !run) return "";
+  if (!limit || max === null) return "";
   const ok = max <= limit;
   const unit = unitOrMix(sol.predicted_residual);
-  const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
+  const u = unit ? ` ${unit}` : "";
   return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
     ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, at or below the limit of ${fmt(limit, 1)}${u}. No more weights are needed.`
       : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, above the limit of ${fmt(limit, 1)}${u}. Fit the weights below and do a check run.`);
+}
+
+/**
+ * Sensors in several units: each unit's largest reading of the run (over the
+ * rows the solve used) against that unit's limit; within tolerance when every
+ * unit with a limit is. The summary's largest is over all the units at once,
+ * a figure in no unit, so it is not used here.
+ */
+function verdictByUnit(sol, run) {
+  const limits = state.options.limits || {};
+  const used = sol.predicted_residual || [];
+  const parts = [];
+  for (const unit of sensorUnits()) {
+    const limit = limits[unit];
+    if (!limit) continue;
+    const sensors = new Set(state.setup.sensors.filter((x) => x.unit === unit).map((x) => x.id));
+    const rows = used.filter((row) => sensors.has(row.sensor));
+    const amps = rows.map((row) => readingFor(run, { sensor: row.sensor, speed: row.speed_rpm })).filter(Boolean).map((r) => Math.abs(r.amplitude));
+    if (!amps.length) continue;
+    parts.push({ unit: unitLabel(unit), max: Math.max(...amps), limit });
+  }
+  if (!parts.length) return "";
+  const ok = parts.every((p) => p.max <= p.limit);
+  const each = parts.map((p) => `${fmt(p.max, 1)} ${p.unit} ${p.max <= p.limit ? "at or below" : "above"} the limit of ${fmt(p.limit, 1)} ${p.unit}`).join("; ");
+  return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
+    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${each}. No more weights are needed.`
+      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${each}. Fit the weights below and do a check run.`);
 }
 
 /** "Add 4.2 g at 250° to what is on now, or replace the weights in this plane by …" */

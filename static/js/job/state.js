@@ -21,7 +21,9 @@ export function emptyReport() {
 
 /** Solve options as the form edits them (see solveOptions in options.js). */
 export function defaultOptions() {
-  return { objective: "least_squares", drop: false, maxMass: {}, leaveSensors: [], leaveSpeeds: [], ampNoise: null, phaseNoise: null, fromRun: null, discrete: true };
+  // `limit`: the acceptable vibration when every sensor reads in one unit;
+  // `limits`: one per unit when they mix (µm pk-pk beside mils pk-pk).
+  return { objective: "least_squares", drop: false, maxMass: {}, limits: {}, leaveSensors: [], leaveSpeeds: [], ampNoise: null, phaseNoise: null, fromRun: null, discrete: true };
 }
 
 export function emptySetup() {

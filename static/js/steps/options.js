@@ -4,7 +4,7 @@
 
 import { h } from "../page/dom.js";
 import { numberInput } from "../page/fields.js";
-import { fmt, commonUnit } from "../page/num.js";
+import { fmt, commonUnit, unitLabel } from "../page/num.js";
 import { state } from "../job/state.js";
 
 /** Stored runs whose state a trim can start from: every run with weights. */
@@ -76,6 +76,27 @@ export function solveOptions() {
   return out;
 }
 
+/** The units the set-up's sensors read in, each once, in sensor order. */
+export function sensorUnits() {
+  return [...new Set(state.setup.sensors.map((x) => x.unit).filter(Boolean))];
+}
+
+/**
+ * The acceptable vibration: one figure when every sensor reads in one unit;
+ * one per unit when they mix, since one figure cannot be both 50 µm and
+ * 50 mils (it was one field labelled "sensor units", compared with the
+ * largest reading whatever its unit).
+ */
+function limitFields(o) {
+  const units = sensorUnits();
+  if (units.length <= 1) {
+    return h("label", {}, h("span", {}, `Acceptable vibration (largest reading, ${commonUnit(state.setup.sensors) || "sensor units"})`), numberInput({ field: "options.limit", kind: "limit", value: o.limit ?? null, required: false, label: "Acceptable vibration", placeholder: "none", onValue: (v) => (o.limit = v) }));
+  }
+  o.limits = o.limits || {};
+  return h("div", { class: "limits vibration" }, h("span", {}, "Acceptable vibration (largest reading), for the sensors in each unit"),
+    h("div", { class: "pair" }, units.map((u) => h("label", {}, `${unitLabel(u)} `, numberInput({ field: `options.limit.${u}`, kind: "limit", value: o.limits[u] ?? null, required: false, label: `Acceptable vibration, ${unitLabel(u)}`, placeholder: "none", size: 5, onValue: (v) => (o.limits[u] = v) })))));
+}
+
 function tickList(title, items, chosen, cls) {
   return h("fieldset", { class: `leave ${cls}` }, h("legend", {}, title),
     items.map(([value, text]) => h("label", { class: "tick" },
@@ -104,7 +125,7 @@ export function optionsPanel() {
         // A trim job had no trial weights to take off.
         h("option", { value: "", selected: !from }, state.setup.trim ? "the zero run (as found)" : "the zero run (all trial weights off)"),
         withWeights.map((r) => h("option", { value: r.id, selected: from === r.id }, `run “${r.id}” (its weights stay on)`)))) : "",
-      h("label", {}, h("span", {}, `Acceptable vibration (largest reading, ${commonUnit(state.setup.sensors) || "sensor units"})`), numberInput({ field: "options.limit", kind: "limit", value: o.limit ?? null, required: false, label: "Acceptable vibration", placeholder: "none", onValue: (v) => (o.limit = v) })),
+      limitFields(o),
       h("label", { class: "tick" }, h("input", { type: "checkbox", class: "drop", checked: !!o.drop, onchange: (e) => (o.drop = e.target.checked) }), " leave out planes the sensors cannot tell apart"),
       h("div", { class: "noise" },
         h("span", {}, "Reading repeatability (for the 95 % figures)"),

@@ -68,6 +68,8 @@ async fn the_form_says_what_the_service_means() {
     stand.renew().await;
     units::figures_over_mixed_units_say_so(&stand).await;
     stand.renew().await;
+    units::a_limit_per_unit_when_sensors_mix_units(&stand).await;
+    stand.renew().await;
     pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
     stand.renew().await;
     unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;

@@ -9,6 +9,7 @@
 use serde_json::json;
 
 use super::conventions::with_a_check_run;
+use crate::harness::form::{field, type_into};
 use crate::harness::stand::{
     example_session, machine_with_coefficients, open_at_solve, post, Stand,
 };
@@ -149,15 +150,7 @@ pub async fn the_machine_pages_jobs_say_their_unit(stand: &Stand) {
 /// read as µm. They now name the units they mix.
 pub async fn figures_over_mixed_units_say_so(stand: &Stand) {
     let b = &stand.browser;
-    let (mut session, _) = example_session("pump-two-plane-exact.json");
-    for s in session["sensors"].as_array_mut().unwrap() {
-        if s["id"].as_str().unwrap().ends_with("-V") {
-            s["unit"] = json!("mils_pp");
-        }
-    }
-    let created = post(stand, "/api/v1/sessions", session).await;
-    let id = created["id"].as_str().expect("stored").to_string();
-    open_at_solve(stand, &id).await;
+    open_mixed_units_at_solve(stand).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .summary").await;
     let labels = js(
@@ -172,5 +165,61 @@ pub async fn figures_over_mixed_units_say_so(stand: &Stand) {
     assert_eq!(
         labels[1], "Largest, mixed units: µm pk-pk, mils pk-pk",
         "{labels}"
+    );
+}
+
+/// The pump job with its vertical sensors in mils pk-pk, the others in µm
+/// pk-pk, stored and opened at the solve step.
+async fn open_mixed_units_at_solve(stand: &Stand) {
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for s in session["sensors"].as_array_mut().unwrap() {
+        if s["id"].as_str().unwrap().ends_with("-V") {
+            s["unit"] = json!("mils_pp");
+        }
+    }
+    let created = post(stand, "/api/v1/sessions", session).await;
+    let id = created["id"].as_str().expect("stored").to_string();
+    open_at_solve(stand, &id).await;
+}
+
+/// Sensors in two units take an acceptable vibration per unit, and the
+/// verdict weighs each unit's largest reading against its own limit. There
+/// was one field labelled "sensor units", compared with the largest reading
+/// whatever its unit: 50 could not mean both 50 µm and 50 mils.
+pub async fn a_limit_per_unit_when_sensors_mix_units(stand: &Stand) {
+    let b = &stand.browser;
+    open_mixed_units_at_solve(stand).await;
+    b.click("details.options summary").await;
+    let labels = js(
+        b,
+        "return [...document.querySelectorAll('details.options input[data-field^=\"options.limit\"]')].map((e) => e.dataset.field)",
+    )
+    .await;
+    assert_eq!(
+        labels,
+        json!(["options.limit.um_pp", "options.limit.mils_pp"]),
+        "one limit per unit"
+    );
+    // The zero run's largest: 465.4 µm pk-pk (DE-H), 490.8 mils pk-pk (NDE-V).
+    type_into(b, &field("options.limit.um_pp"), "500").await;
+    type_into(b, &field("options.limit.mils_pp"), "400").await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for(".verdict").await;
+    let verdict = b.text(".verdict").await;
+    assert_eq!(
+        verdict,
+        "Not yet within tolerance: the largest vibration in run “zero” is 465.4 µm pk-pk at or below the limit of 500.0 µm pk-pk; 490.8 mils pk-pk above the limit of 400.0 mils pk-pk. Fit the weights below and do a check run."
+    );
+    type_into(b, &field("options.limit.mils_pp"), "491").await;
+    b.click("#step-solve button.solve").await;
+    b.wait_until(
+        "the verdict weighs the new limit",
+        "const v = document.querySelector('.verdict'); return !!v && v.textContent.startsWith('Within tolerance')",
+    )
+    .await;
+    let verdict = b.text(".verdict").await;
+    assert!(
+        verdict.contains("490.8 mils pk-pk at or below the limit of 491.0 mils pk-pk"),
+        "{verdict}"
     );
 }

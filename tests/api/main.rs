@@ -25,3 +25,4 @@ mod serve;
 mod service;
 mod sessions;
 mod stored_text;
+mod trim_jobs;

@@ -120,6 +120,11 @@ pub fn suggest(
     options: &SolveOptions,
     coefficients: Option<DMatrix<Complex64>>,
 ) -> Result<Vec<TrialSuggestion>, InputError> {
+    // A trim job whose options name no coefficients is sized from the trim's.
+    if let Some(with_trim) = crate::balancing::job::trim::options_for(session, options) {
+        return suggest(session, &with_trim, coefficients)
+            .map_err(crate::balancing::job::trim::named_in_trim);
+    }
     let checked = check(session)?;
     let selection = select(&checked, options)?;
     let conv = checked.conventions;

@@ -14,6 +14,7 @@ pub mod linear;
 pub mod pool;
 pub mod runout;
 pub mod supplied;
+pub mod trim;
 
 use crate::balancing::error::InputError;
 use crate::balancing::model::{Session, SolveOptions, Weight};
@@ -34,6 +35,10 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
 /// validates a file first, to name errors under `session.` when it is wrapped).
 pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Solution, InputError> {
     let session = checked.session;
+    // A trim job whose options name no coefficients: the trim's.
+    if let Some(with_trim) = trim::options_for(session, options) {
+        return solve_checked(checked, &with_trim).map_err(trim::named_in_trim);
+    }
     if options.coefficients_from.is_some() && options.influence_coefficients.is_none() {
         return Err(InputError::invalid(
             "coefficients_unavailable",

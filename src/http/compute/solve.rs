@@ -36,13 +36,18 @@ pub(crate) fn check_posted_session(session: &Session) -> Result<(), InputError> 
     validate::check_defined_strings(session).map_err(|e| e.under("session"))
 }
 
-/// Name a solver error's field within a posted options body; a fault in the
-/// stored session is not a field of the body (the message names it).
+/// Name a solver error's field within a posted options body, or, for a fault
+/// in the stored session (its runs, a trim job's `trim`), as `session.…`, the
+/// path `/api/v1/solve` gives it. Such faults had no field at all.
 fn within_options(mut e: InputError) -> InputError {
     e.field = e
         .field
         .take()
-        .and_then(|f| f.strip_prefix("options.").map(str::to_string));
+        .and_then(|f| match f.strip_prefix("options.") {
+            Some(rest) => Some(rest.to_string()),
+            None if f == "options" => None,
+            None => Some(format!("session.{f}")),
+        });
     e
 }
 

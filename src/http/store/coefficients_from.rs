@@ -5,6 +5,7 @@
 
 use crate::balancing::job::pool::{self, Pooled};
 use crate::balancing::job::supplied::unit_name;
+use crate::balancing::job::trim;
 use crate::balancing::model::{Session, SolveOptions};
 use crate::balancing::InputError;
 use crate::db::machines::{self, Missing};
@@ -18,14 +19,28 @@ use crate::http::AppState;
 pub async fn resolve(
     state: &AppState,
     session: &Session,
-    mut options: SolveOptions,
+    options: SolveOptions,
     name_field: fn(InputError) -> InputError,
 ) -> Result<SolveOptions, ApiError> {
+    // A trim job whose options name no coefficients is solved with the
+    // trim's; errors then name the trim's fields.
+    let (mut options, from_trim) = match trim::options_for(session, &options) {
+        Some(with_trim) => (with_trim, true),
+        None => (options, false),
+    };
+    // The trim's machine is looked up only once the trim could name one (as
+    // a session is stored): an id no machine could have is that, not unknown.
+    if let Some(t) = session.trim.as_ref().filter(|_| from_trim) {
+        crate::balancing::validate::check_trim_source(t)
+            .map_err(|e| ApiError::from(name_field(e)))?;
+    }
     let Some(from) = options.coefficients_from.clone() else {
         return Ok(options);
     };
     let conventions = session.conventions.unwrap_or_default();
-    let fail = |e: InputError| -> ApiError { name_field(e).into() };
+    let fail = |e: InputError| -> ApiError {
+        name_field(if from_trim { trim::named_in_trim(e) } else { e }).into()
+    };
     if options.influence_coefficients.is_some() {
         return Err(fail(InputError::invalid(
             "conflicting_options",

@@ -23,7 +23,7 @@ pub use fields::{
 };
 pub(crate) use fields::{MAX_RADIUS_MM, MIN_RADIUS_MM, MIN_ROTOR_MASS_KG, MIN_SERVICE_SPEED_RPM};
 pub(crate) use runs::{MAX_MASS_G, MIN_MASS_G};
-pub use trim::version_below_one;
+pub use trim::{check_source as check_trim_source, version_below_one};
 
 use crate::balancing::error::InputError;
 use crate::balancing::limits::{check_session, too_large, Limits};

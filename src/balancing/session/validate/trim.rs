@@ -8,14 +8,11 @@ use crate::balancing::error::InputError;
 use crate::balancing::job::supplied::{check_covariance, check_unit};
 use crate::balancing::model::{Session, Trim};
 
-/// Exactly one source of coefficients, naming a machine or listing known
-/// planes' and sensors' coefficients.
-pub(super) fn check_trim(
-    session: &Session,
-    trim: &Trim,
-    planes: &IdIndex<'_>,
-    sensors: &IdIndex<'_>,
-) -> Result<(), InputError> {
+/// The trim's source, as it must be before a machine's coefficients are read
+/// for it (the service reads them before it solves): exactly one source,
+/// naming a machine id a machine could have and a version from 1, or a list
+/// that is not empty.
+pub fn check_source(trim: &Trim) -> Result<(), InputError> {
     match (&trim.coefficients_from, &trim.influence_coefficients) {
         (Some(from), None) => {
             check_machine_id(|| "trim.coefficients_from.machine".into(), &from.machine)?;
@@ -28,13 +25,29 @@ pub(super) fn check_trim(
             }
             Ok(())
         }
-        (None, Some(list)) => {
-            if list.is_empty() {
-                return Err(invalid(
-                    "trim.influence_coefficients",
-                    "list the coefficients, or leave trim out",
-                ));
-            }
+        (None, Some(list)) if list.is_empty() => Err(invalid(
+            "trim.influence_coefficients",
+            "list the coefficients, or leave trim out",
+        )),
+        (None, Some(_)) => Ok(()),
+        _ => Err(invalid(
+            "trim",
+            "give either coefficients_from or influence_coefficients",
+        )),
+    }
+}
+
+/// Exactly one source of coefficients, naming a machine or listing known
+/// planes' and sensors' coefficients.
+pub(super) fn check_trim(
+    session: &Session,
+    trim: &Trim,
+    planes: &IdIndex<'_>,
+    sensors: &IdIndex<'_>,
+) -> Result<(), InputError> {
+    check_source(trim)?;
+    match &trim.influence_coefficients {
+        Some(list) => {
             for (k, c) in list.iter().enumerate() {
                 let f = |what: &str| format!("trim.influence_coefficients[{k}].{what}");
                 if !planes.contains_key(c.plane.as_str()) {
@@ -88,10 +101,7 @@ pub(super) fn check_trim(
             }
             Ok(())
         }
-        _ => Err(invalid(
-            "trim",
-            "give either coefficients_from or influence_coefficients",
-        )),
+        None => Ok(()),
     }
 }
 

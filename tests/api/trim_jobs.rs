@@ -26,6 +26,25 @@ fn trim_job(session: &Value, trim: Value) -> Value {
     job
 }
 
+/// Store `session` and solve it with no options: the solve's status and
+/// answer, and where the session is.
+async fn store_and_solve(
+    client: &reqwest::Client,
+    server: &common::Server,
+    session: &Value,
+) -> (u16, Value, String) {
+    let (status, headers, created) = post(client, &server.url("/api/v1/sessions"), session).await;
+    assert_eq!(status, 201, "{created}");
+    let location = headers["location"].to_str().unwrap().to_string();
+    let (status, _, solved) = post(
+        client,
+        &server.url(&format!("{location}/solutions")),
+        &json!({}),
+    )
+    .await;
+    (status, solved, location)
+}
+
 fn masses(solution: &Value) -> Vec<(String, f64, f64)> {
     solution["corrections"]
         .as_array()
@@ -68,12 +87,9 @@ async fn a_trim_job_is_solved_with_the_coefficients_it_names() {
     assert_same(&posted, &full);
 
     // Stored, solved with an empty body.
-    let (status, headers, created) = post(&client, &server.url("/api/v1/sessions"), &job).await;
-    assert_eq!(status, 201, "{created}");
-    let location = headers["location"].to_str().unwrap().to_string();
-    let solutions = server.url(&format!("{location}/solutions"));
-    let (status, _, stored) = post(&client, &solutions, &json!({})).await;
+    let (status, stored, location) = store_and_solve(&client, &server, &job).await;
     assert_eq!(status, 201, "{stored}");
+    let solutions = server.url(&format!("{location}/solutions"));
     assert_same(&stored["solution"], &full);
 
     // The trial weights are sized from them too (no trial run to size from).
@@ -141,15 +157,7 @@ async fn a_trim_job_from_a_machines_coefficients_names_the_version_it_used() {
         &session,
         json!({"coefficients_from": {"machine": "PUMP-1"}}),
     );
-    let (status, headers, created) = post(&client, &server.url("/api/v1/sessions"), &job).await;
-    assert_eq!(status, 201, "{created}");
-    let location = headers["location"].to_str().unwrap().to_string();
-    let (status, _, solved) = post(
-        &client,
-        &server.url(&format!("{location}/solutions")),
-        &json!({}),
-    )
-    .await;
+    let (status, solved, _) = store_and_solve(&client, &server, &job).await;
     assert_eq!(status, 201, "{solved}");
     assert_same(&solved["solution"], &full);
     assert_eq!(
@@ -159,23 +167,11 @@ async fn a_trim_job_from_a_machines_coefficients_names_the_version_it_used() {
 
     // A machine that has none: refused naming the trim's field, as
     // `session.trim.…` for the stored session as for the posted one.
-    let (status, headers, created) = post(
-        &client,
-        &server.url("/api/v1/sessions"),
-        &trim_job(
-            &session,
-            json!({"coefficients_from": {"machine": "NO-SUCH"}}),
-        ),
-    )
-    .await;
-    assert_eq!(status, 201, "{created}");
-    let location = headers["location"].to_str().unwrap().to_string();
-    let (status, _, refused) = post(
-        &client,
-        &server.url(&format!("{location}/solutions")),
-        &json!({}),
-    )
-    .await;
+    let nowhere = trim_job(
+        &session,
+        json!({"coefficients_from": {"machine": "NO-SUCH"}}),
+    );
+    let (status, refused, location) = store_and_solve(&client, &server, &nowhere).await;
     assert_eq!(status, 422, "{refused}");
     assert_eq!(refused["error"]["code"], "unknown_machine", "{refused}");
     assert_eq!(
@@ -185,7 +181,7 @@ async fn a_trim_job_from_a_machines_coefficients_names_the_version_it_used() {
     let (status, _, refused) = post(
         &client,
         &server.url("/api/v1/solve"),
-        &json!({"session": trim_job(&session, json!({"coefficients_from": {"machine": "NO-SUCH"}}))}),
+        &json!({ "session": nowhere }),
     )
     .await;
     assert_eq!(status, 422, "{refused}");
@@ -220,15 +216,7 @@ async fn a_stored_sessions_fault_names_its_field_under_session() {
     let session = example("pump-two-plane-exact.json")["session"].clone();
     let mut job = session.clone();
     job["runs"] = json!([session["runs"][0]]);
-    let (status, headers, created) = post(&client, &server.url("/api/v1/sessions"), &job).await;
-    assert_eq!(status, 201, "{created}");
-    let location = headers["location"].to_str().unwrap().to_string();
-    let (status, _, refused) = post(
-        &client,
-        &server.url(&format!("{location}/solutions")),
-        &json!({}),
-    )
-    .await;
+    let (status, refused, _) = store_and_solve(&client, &server, &job).await;
     assert_eq!(status, 422, "{refused}");
     assert_eq!(refused["error"]["code"], "too_few_trial_runs", "{refused}");
     assert_eq!(refused["error"]["field"], "session.runs", "{refused}");

@@ -60,11 +60,26 @@ pub fn session(
     noise: f64,
     seed: u64,
 ) -> Session {
+    session_with_weights(rotors, speeds_rpm, unit, noise, seed, 12.0, 20.0)
+}
+
+/// As [`session`], with an original unbalance of `original_g` (at 250°) and
+/// a trial weight of `trial_g` (at 30°), both at 200 mm: a trial small beside
+/// the original unbalance gives coefficients noisier than the readings.
+pub fn session_with_weights(
+    rotors: &[Jeffcott],
+    speeds_rpm: &[f64],
+    unit: Unit,
+    noise: f64,
+    seed: u64,
+    original_g: f64,
+    trial_g: f64,
+) -> Session {
     let conv = Conventions::default();
     let radius_mm = 200.0;
-    let trial = (20.0, 30.0);
-    // Original unbalance 12 g at 200 mm, 250° (session angles).
-    let original = weight_in(conv, 12.0, 250.0) * radius_mm * 1e-6;
+    let trial = (trial_g, 30.0);
+    // Original unbalance at 200 mm, 250° (session angles).
+    let original = weight_in(conv, original_g, 250.0) * radius_mm * 1e-6;
     let trial_u = weight_in(conv, trial.0, trial.1) * radius_mm * 1e-6;
     let mut rng = StdRng::seed_from_u64(seed);
     let gauss = Normal::new(0.0, 1.0).unwrap();

@@ -8,7 +8,7 @@ use crate::support;
 use fieldbal::balancing::model::Unit;
 use fieldbal::identification::api684;
 use fieldbal::identification::rotor::{
-    identify, RotorOptions, RotorRequest, RotorResult, UnbalanceAngle,
+    identify, CrossCoupling, RotorOptions, RotorRequest, RotorResult, UnbalanceAngle,
 };
 use support::{session, session_with_weights, speeds, Jeffcott};
 
@@ -618,24 +618,37 @@ fn the_damping_resolution_covers_the_truth_on_noisy_coefficients_at_many_speeds(
         sensor_turn: 0.3,
         ..Jeffcott::with(150.0, 2450.0, 0.05)
     };
-    let seeds = 100;
-    let (mut missed, mut sum) = (0, 0.0);
-    for seed in 1..=seeds {
-        let grid = speeds(1715.0, 3185.0, 25);
-        let s = session_with_weights(&[rotor], &grid, Unit::UmPp, 0.1, seed, 20.0, 6.0);
-        let out = answer(&RotorRequest {
-            session: s,
-            options: RotorOptions::default(),
-        });
-        let r = &out["results"][0];
-        sum += num(r, "damping_ratio");
-        missed += usize::from(!covers(r, rotor.zeta()));
+    // The cross-coupling estimated (held in the correction) and taken as
+    // zero (the plain fit missed 34 % of 600 records so, session 23).
+    for coupling in [CrossCoupling::Estimated, CrossCoupling::Zero] {
+        let seeds = 100;
+        let (mut missed, mut sum) = (0, 0.0);
+        for seed in 1..=seeds {
+            let grid = speeds(1715.0, 3185.0, 25);
+            let s = session_with_weights(&[rotor], &grid, Unit::UmPp, 0.1, seed, 20.0, 6.0);
+            let out = answer(&RotorRequest {
+                session: s,
+                options: RotorOptions {
+                    cross_coupling: Some(coupling),
+                    ..Default::default()
+                },
+            });
+            let r = &out["results"][0];
+            sum += num(r, "damping_ratio");
+            missed += usize::from(!covers(r, rotor.zeta()));
+        }
+        let mean = sum / seeds as f64;
+        println!("{coupling:?}: {missed} of {seeds} missed, mean ζ {mean:.4}");
+        // 95 % of 100: 5 expected, binomial standard deviation 2.2.
+        assert!(
+            missed <= 12,
+            "{coupling:?}: {missed} of {seeds} missed, mean ζ {mean:.4}"
+        );
+        // Not by being wide: the fitted damping is right on average (its
+        // scatter is under 0.01, the mean's under 0.001).
+        assert!(
+            (mean - 0.05).abs() < 0.0025,
+            "{coupling:?}: mean ζ {mean:.4}"
+        );
     }
-    let mean = sum / seeds as f64;
-    println!("{missed} of {seeds} missed, mean ζ {mean:.4}");
-    // 95 % of 100: 5 expected, binomial standard deviation 2.2.
-    assert!(missed <= 12, "{missed} of {seeds} missed, mean ζ {mean:.4}");
-    // Not by being wide: the fitted damping is right on average (its
-    // scatter is under 0.01, the mean's under 0.001).
-    assert!((mean - 0.05).abs() < 0.0025, "mean ζ {mean:.4}");
 }

@@ -143,7 +143,10 @@ fn identify_file(
     let bytes = read(file, max)?;
     let value = match what {
         IdentifyWhat::Rotor => {
-            serde_json::to_value(id::rotor::identify(&balancing::from_json(&bytes)?)?)
+            let req: id::RotorRequest = balancing::from_json(&bytes)?;
+            // The session's texts and machine, as the endpoint refuses them.
+            balancing::check_posted_session(&req.session)?;
+            serde_json::to_value(id::rotor::identify(&req)?)
         }
         IdentifyWhat::FreeDecay => {
             serde_json::to_value(id::decay::identify(&balancing::from_json(&bytes)?)?)
@@ -235,6 +238,9 @@ fn pool_files(
     // files are all read first (the checked sessions borrow them), but an
     // error is reported for the first file that fails, reading or validation,
     // as when each file was read and validated in turn.
+    // The service's rule of a pool's list, the files named as given.
+    let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+    balancing::job::pool::check_names(&names)?;
     let under = |i: usize| move |e: InputError| e.under(&format!("sessions[{i}]"));
     let mut parsed = Vec::with_capacity(files.len());
     let mut unreadable = None;
@@ -258,7 +264,6 @@ fn pool_files(
         Some(path) => balancing::from_json(&read(path, max)?).map_err(|e| e.under("options"))?,
         None => balancing::job::pool::PoolOptions::default(),
     };
-    let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let pooled = balancing::job::pool::pool_checked(&names, &checked, &opts)?;
     Ok(serde_json::to_value(pooled).expect("coefficients serialise"))

@@ -44,9 +44,23 @@ pub fn parse_session_file(bytes: &[u8]) -> Result<(Session, SolveOptions), Input
 
 /// Validate a session file's session, naming a wrapped session's fields under
 /// `session.`; the checked session can be solved without validating it again
-/// ([`solve_checked`]).
+/// ([`solve_checked`]). A file defines its session as a request does, so its
+/// texts and the machine it names are checked first
+/// (`validate::check_defined_strings`), as the service checks a posted
+/// session ([`check_posted_session`]): `fieldbal` refuses what the service
+/// refuses, with the same code and message.
 pub fn check_file(file: &file::SessionFile) -> Result<validate::Checked<'_>, InputError> {
-    validate::check(&file.session).map_err(|e| if file.wrapped { e.under("session") } else { e })
+    validate::check_defined_strings(&file.session)
+        .and_then(|()| validate::check(&file.session))
+        .map_err(|e| if file.wrapped { e.under("session") } else { e })
+}
+
+/// The strings of a session a request posts within `{"session", ...}`
+/// (`/solve`, `/trial-weights`, `/identify/rotor`, and their `fieldbal`
+/// commands): `validate::check_defined_strings`, the store's rule for a
+/// posted session, its fields named under `session.`.
+pub fn check_posted_session(session: &Session) -> Result<(), InputError> {
+    validate::check_defined_strings(session).map_err(|e| e.under("session"))
 }
 
 /// Check a session against the contract (everything but solvability: a stored

@@ -64,6 +64,10 @@ fn solve_file_inner(
             .map_err(|e| e.under("options"))?,
         None => file.options.clone(),
     };
+    // The service's rule of `coefficients_from` (not beside
+    // `influence_coefficients`, a version from 1) before the solve says
+    // that offline it cannot be read.
+    balancing::job::check_coefficients_from(&opts)?;
     let solution = balancing::solve_checked(checked, &opts)?;
     Ok(Answer::Solution(Box::new(solution)))
 }

@@ -20,6 +20,7 @@ mod openapi;
 mod pages;
 mod records;
 mod review22;
+mod review23;
 mod runs;
 mod serve;
 mod service;

@@ -31,6 +31,35 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
     solve_checked(check(session)?, options)
 }
 
+/// What a request's `coefficients_from` must be before any store is asked
+/// for it: not beside `influence_coefficients` (the one or the other), and
+/// a `version` from 1. The one rule of the service (which then reads the
+/// machine's coefficients into `influence_coefficients`) and of `fieldbal
+/// solve` (which cannot read them, and says so when solving); errors name
+/// `options.…`.
+pub fn check_coefficients_from(options: &SolveOptions) -> Result<(), InputError> {
+    let Some(from) = &options.coefficients_from else {
+        return Ok(());
+    };
+    if options.influence_coefficients.is_some() {
+        return Err(InputError::invalid(
+            "conflicting_options",
+            "options.influence_coefficients",
+            "give influence_coefficients or coefficients_from, not both",
+        ));
+    }
+    // Below 1 no machine could have the version: a bad value, said as a
+    // machine's coefficients and a trim job say it.
+    if let Some(v) = from.version.filter(|&v| v < 1) {
+        return Err(InputError::invalid(
+            "out_of_range",
+            "options.coefficients_from.version",
+            crate::balancing::validate::version_below_one(v),
+        ));
+    }
+    Ok(())
+}
+
 /// [`solve`] of a session its caller has already validated (`fieldbal solve`
 /// validates a file first, to name errors under `session.` when it is wrapped).
 pub fn solve_checked(checked: Checked<'_>, options: &SolveOptions) -> Result<Solution, InputError> {

@@ -75,15 +75,52 @@ pub fn pool(sessions: &[(String, Session)], options: &PoolOptions) -> Result<Poo
     pool_checked(&names, &checked, options)
 }
 
+/// Most sessions one pool may list: the service reads each whole from the
+/// database before the fit, so an unbounded list (a 4 MiB body holds
+/// 400,000 ids) would tie up the request for minutes; `fieldbal
+/// coefficients` reads as many files.
+pub const MAX_POOLED_SESSIONS: usize = 1000;
+
+/// The sessions a pool names, checked before any is read: 1 to
+/// [`MAX_POOLED_SESSIONS`] of them, none named twice (it would count its
+/// runs twice). The one rule of the service's pool (session ids) and of
+/// `fieldbal coefficients` (file paths as given); errors name `sessions` or
+/// `sessions[i]`, the second of a pair.
+pub fn check_names<S: AsRef<str>>(names: &[S]) -> Result<(), InputError> {
+    if names.is_empty() {
+        return Err(no_session());
+    }
+    if names.len() > MAX_POOLED_SESSIONS {
+        return Err(crate::balancing::limits::too_large(
+            "sessions",
+            "sessions to pool",
+            names.len(),
+            MAX_POOLED_SESSIONS,
+        ));
+    }
+    let mut seen = std::collections::HashSet::with_capacity(names.len());
+    for (i, s) in names.iter().enumerate() {
+        let s = s.as_ref();
+        if !seen.insert(s) {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                format!("sessions[{i}]"),
+                format!("session '{s}' is listed twice"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn no_session() -> InputError {
+    InputError::invalid("invalid_value", "sessions", "list at least one session")
+}
+
 /// The errors of [`pool`] that come before the sessions' own: no session,
 /// or bad noise options.
 fn check_options(sessions: usize, options: &PoolOptions) -> Result<Noise, InputError> {
     if sessions == 0 {
-        return Err(InputError::invalid(
-            "invalid_value",
-            "sessions",
-            "list at least one session",
-        ));
+        return Err(no_session());
     }
     noise_options(&SolveOptions {
         amplitude_noise_pct: options.amplitude_noise_pct,

@@ -36,7 +36,7 @@ pub async fn rotor(
     JsonBody(req): JsonBody<RotorRequest>,
 ) -> Result<Json<RotorIdentification>, Refused> {
     // The session's texts and machine, as `/solve` and the store refuse them.
-    crate::http::solve::check_posted_session(&req.session)?;
+    crate::balancing::check_posted_session(&req.session)?;
     blocking(&state, move || rotor::identify(&req)).await
 }
 

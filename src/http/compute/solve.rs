@@ -7,7 +7,7 @@ use axum::response::{IntoResponse, Response};
 use axum::Json;
 
 use crate::balancing::model::{Session, SolveOptions, SolveRequest};
-use crate::balancing::{self, validate, InputError, Solution};
+use crate::balancing::{self, InputError, Solution};
 use crate::db::idempotency;
 use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
@@ -26,14 +26,6 @@ pub(crate) fn within_solve_request(e: InputError) -> InputError {
         Some(f) if f != "options" && !f.starts_with("options.") => e.under("session"),
         _ => e,
     }
-}
-
-/// What the core leaves to the request that defines a session: its texts
-/// and the machine it names (`validate::check_defined_strings`), refused by
-/// a stateless endpoint as when the session is stored (same code and
-/// message), named within `{"session", ...}`.
-pub(crate) fn check_posted_session(session: &Session) -> Result<(), InputError> {
-    validate::check_defined_strings(session).map_err(|e| e.under("session"))
 }
 
 /// Name a solver error's field within a posted options body, or, for a fault
@@ -84,7 +76,7 @@ pub async fn solve(
 ) -> Result<Json<Solution>, Refused> {
     // `balancing::solve` validates the session first; `within_solve_request`
     // puts its field paths under `session.`.
-    check_posted_session(&req.session)?;
+    balancing::check_posted_session(&req.session)?;
     // Stored coefficients (v2 `coefficients_from`) are read here, not in the core.
     let options =
         coefficients_from::resolve(&state, &req.session, req.options, within_solve_request).await?;

@@ -7,12 +7,13 @@ use axum::Json;
 use serde::Serialize;
 use utoipa::ToSchema;
 
+use crate::balancing::check_posted_session;
 use crate::balancing::fit::trial::{suggest, TrialRequest, TrialSuggestion};
 use crate::balancing::model::Conventions;
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
 use crate::http::responses::{BodyRefused, MalformedJson, SolverBusy};
-use crate::http::solve::{check_posted_session, within_solve_request};
+use crate::http::solve::within_solve_request;
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;

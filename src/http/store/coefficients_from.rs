@@ -41,22 +41,9 @@ pub async fn resolve(
     let fail = |e: InputError| -> ApiError {
         name_field(if from_trim { trim::named_in_trim(e) } else { e }).into()
     };
-    if options.influence_coefficients.is_some() {
-        return Err(fail(InputError::invalid(
-            "conflicting_options",
-            "options.influence_coefficients",
-            "give influence_coefficients or coefficients_from, not both",
-        )));
-    }
-    // Below 1 no machine could have the version: a bad value, said as a
-    // machine's coefficients and a trim job say it.
-    if let Some(v) = from.version.filter(|&v| v < 1) {
-        return Err(fail(InputError::invalid(
-            "out_of_range",
-            "options.coefficients_from.version",
-            crate::balancing::validate::version_below_one(v),
-        )));
-    }
+    // The core's rule (not both ways of giving coefficients, a version
+    // from 1), as `fieldbal solve` applies it.
+    crate::balancing::job::check_coefficients_from(&options).map_err(fail)?;
     let stored = match machines::coefficients(&state.db, &from.machine, from.version).await? {
         Ok(s) => s,
         Err(Missing::Machine) => {

@@ -165,11 +165,6 @@ pub async fn delete(
     Ok(StatusCode::NO_CONTENT)
 }
 
-/// Most sessions one pool may list: each is read whole from the database
-/// before the fit, so an unbounded list (a 4 MiB body holds 400,000 ids)
-/// would tie up the request for minutes.
-pub const MAX_POOLED_SESSIONS: usize = 1000;
-
 /// The body of `POST /api/v1/machines/{id}/coefficients`.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(remote = "Self")]
@@ -206,29 +201,9 @@ pub async fn pool_coefficients(
     if !machines::exists(&state.db, &id).await? {
         return Err(no_machine(&id).into());
     }
-    if req.sessions.is_empty() {
-        return Err(invalid("sessions", "list at least one session of this machine").into());
-    }
-    if req.sessions.len() > MAX_POOLED_SESSIONS {
-        return Err(crate::balancing::limits::too_large(
-            "sessions",
-            "sessions to pool",
-            req.sessions.len(),
-            MAX_POOLED_SESSIONS,
-        )
-        .into());
-    }
-    let mut seen = std::collections::HashSet::with_capacity(req.sessions.len());
-    for (i, s) in req.sessions.iter().enumerate() {
-        if !seen.insert(s.as_str()) {
-            return Err(InputError::invalid(
-                "duplicate_id",
-                format!("sessions[{i}]"),
-                format!("session '{s}' is listed twice"),
-            )
-            .into());
-        }
-    }
+    // The core's rule of a pool's list (1 to 1000 sessions, none twice), as
+    // `fieldbal coefficients` applies it to its files.
+    pool::check_names(&req.sessions)?;
     let loaded = match machines::load_sessions(&state.db, &req.sessions).await? {
         Ok(s) => s,
         Err(i) => {

@@ -126,6 +126,21 @@ impl Page {
     }
 }
 
+/// The query of a GET that takes no parameter (a session, a run, the
+/// OpenAPI document): any parameter is refused with 400 `invalid_query`
+/// naming it, as the lists and `GET /api/v1/machines/{id}` refuse one they
+/// do not take; ignored, a misspelt parameter read as if it were applied.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NoParams {}
+
+impl NoParams {
+    /// `Ok` for an empty query (or none), else the contract's 400.
+    pub fn check(params: Result<Query<NoParams>, QueryRejection>) -> Result<(), ApiError> {
+        params.map(drop).map_err(invalid_query)
+    }
+}
+
 /// A query string that does not parse: 400 with the contract's body,
 /// naming the parameter at fault when axum's message does.
 pub fn invalid_query(r: QueryRejection) -> ApiError {

@@ -52,9 +52,15 @@ use super::{identify, machines, residual, runs, sessions, solve, trial_weights};
 pub struct ApiDoc;
 
 #[utoipa::path(get, path = "/api/v1/openapi.json", tag = "service",
-    responses((status = 200, description = "This document")))]
-pub async fn document() -> Json<utoipa::openapi::OpenApi> {
-    Json(ApiDoc::openapi())
+    responses((status = 200, description = "This document"), super::responses::QueryRefused))]
+pub async fn document(
+    params: Result<
+        axum::extract::Query<super::headers::NoParams>,
+        axum::extract::rejection::QueryRejection,
+    >,
+) -> Result<Json<utoipa::openapi::OpenApi>, super::error::ApiError> {
+    super::headers::NoParams::check(params)?;
+    Ok(Json(ApiDoc::openapi()))
 }
 
 /// What the edge (src/http/edge) may answer to any request, before or around

@@ -29,6 +29,14 @@ pub enum BodyRefused {
     NotJson(ErrorBody),
 }
 
+/// A query parameter on a GET that takes none (`headers::NoParams`).
+#[derive(IntoResponses)]
+#[response(
+    status = 400,
+    description = "A query parameter: this operation takes none (`invalid_query`, naming it)"
+)]
+pub struct QueryRefused(pub ErrorBody);
+
 /// A paged list's query (`limit`, `offset`) refused.
 #[derive(IntoResponses)]
 pub enum PageRefused {

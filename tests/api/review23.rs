@@ -9,7 +9,7 @@ use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use common::{example, fresh_server, post};
+use common::{example, fresh_server, post, send};
 use serde_json::{json, Value};
 
 fn pump() -> Value {
@@ -207,4 +207,102 @@ async fn the_coefficients_command_takes_the_services_rule_of_a_pool_list() {
     args.extend(ids.iter().map(String::as_str));
     // None of the files exists: the list is refused before one is read.
     assert_eq!(cli_error(&args, b"", ""), error_of(&many));
+}
+
+/// Every GET of the API refuses a query parameter it does not take with
+/// 400 `invalid_query` naming it, as the lists and `GET
+/// /api/v1/machines/{id}` did, before it looks for the resource (an
+/// unknown one is still 400): `GET /api/v1/sessions/{id}`, a run's GET
+/// and the OpenAPI document ignored it, so a client's misspelt
+/// parameter read as if it had been applied. The OpenAPI document lists
+/// the 400 on every GET of the API.
+#[tokio::test]
+async fn every_get_refuses_a_query_parameter_it_does_not_take() {
+    let (_dir, server, client) = fresh_server().await;
+    let mut s = pump();
+    s["machine"] = json!("P-1");
+    let (status, _, body) = post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "P-1"}),
+    )
+    .await;
+    assert_eq!(status, 201, "{body}");
+    let (status, _, body) = post(&client, &server.url("/api/v1/sessions"), &s).await;
+    assert_eq!(status, 201, "{body}");
+    let id = body["id"].as_str().unwrap().to_string();
+    let session = format!("/api/v1/sessions/{id}");
+    let gets = [
+        "/api/v1/openapi.json".to_string(),
+        "/api/v1/sessions".into(),
+        session.clone(),
+        format!("{session}/runs/zero"),
+        format!("{session}/runs/zero/versions"),
+        format!("{session}/solutions"),
+        "/api/v1/machines".into(),
+        "/api/v1/machines/P-1".into(),
+        "/api/v1/machines/P-1/coefficients".into(),
+        // Not there: the query is refused first, as on machines/{id}.
+        "/api/v1/sessions/no-such-session".into(),
+        format!("{session}/runs/no-such-run"),
+    ];
+    for path in &gets {
+        for query in [
+            "verison=2",
+            "bogus",
+            "limit=1&x_y=",
+            "version=1&fields=name",
+        ] {
+            let url = server.url(&format!("{path}?{query}"));
+            let (status, _, body) = send(client.get(&url)).await;
+            let (code, field, message) = error_of(&body);
+            let want = query
+                .split('&')
+                .map(|p| p.split('=').next().unwrap())
+                .find(|p| !takes(path, p))
+                .unwrap();
+            assert_eq!(
+                (status, code.as_str(), field.as_deref()),
+                (400, "invalid_query", Some(want)),
+                "GET {path}?{query}: {message}"
+            );
+        }
+        // Without a query each answers as before: the unknown ones, and
+        // the coefficients of a machine that has none yet, 404.
+        let (status, _, body) = send(client.get(server.url(path))).await;
+        let missing = path.contains("no-such") || path.ends_with("/coefficients");
+        assert_eq!(
+            status,
+            if missing { 404 } else { 200 },
+            "GET {path}: {body}"
+        );
+    }
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    for (path, item) in doc["paths"].as_object().unwrap() {
+        if let Some(get) = item.get("get").filter(|_| path.starts_with("/api/v1/")) {
+            assert!(
+                get["responses"].get("400").is_some(),
+                "GET {path} lists no 400: {}",
+                get["responses"]
+            );
+        }
+    }
+}
+
+/// Whether `path` takes the query parameter `name`: `limit` on a list,
+/// `version` on a machine's coefficients.
+fn takes(path: &str, name: &str) -> bool {
+    let paged = [
+        "/api/v1/sessions",
+        "/api/v1/machines",
+        "/api/v1/machines/P-1",
+    ]
+    .contains(&path)
+        || path.ends_with("/versions")
+        || path.ends_with("/solutions");
+    match name {
+        "limit" => paged,
+        "version" => path.ends_with("/coefficients"),
+        _ => false,
+    }
 }

@@ -16,7 +16,7 @@ use crate::db::{self, RunVersion};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, Page};
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused};
 use crate::http::sessions::validate_stored;
 use crate::http::store::created::CreatedAnswer;
 use crate::http::AppState;
@@ -165,12 +165,15 @@ pub async fn replace(
     responses(
         (status = 200, description = "The run's current version, as it would be PUT again", body = Run,
          headers(("ETag" = String, description = "The run's version; send it as If-Match with a PUT"))),
+        QueryRefused,
         (status = 404, description = "No such session or run", body = ErrorBody),
     ))]
 pub async fn get(
     State(state): State<AppState>,
     Path((id, run_id)): Path<(String, String)>,
+    params: Result<Query<headers::NoParams>, QueryRejection>,
 ) -> Result<Response, ApiError> {
+    headers::NoParams::check(params)?;
     let (run, version) = db::runs::get(&state.db, &id, &run_id).await?;
     Ok(([(header::ETAG, headers::run_etag(version))], Json(run)).into_response())
 }

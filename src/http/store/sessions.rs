@@ -16,7 +16,7 @@ use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers;
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused};
 use crate::http::store::created::CreatedAnswer;
 use crate::http::work::check_blocking;
 use crate::http::AppState;
@@ -144,12 +144,15 @@ pub async fn list(
     responses(
         (status = 200, description = "The session exactly as it would be posted again", body = Session,
          headers(("ETag" = String, description = "Changes whenever the session or any of its runs changes"))),
+        QueryRefused,
         (status = 404, description = "No such session", body = ErrorBody),
     ))]
 pub async fn get(
     State(state): State<AppState>,
     Path(id): Path<String>,
+    params: Result<Query<headers::NoParams>, QueryRejection>,
 ) -> Result<Response, ApiError> {
+    headers::NoParams::check(params)?;
     let session = db::sessions::get(&state.db, &id).await?;
     let etag = headers::etag_of(&session);
     Ok(([(header::ETAG, etag)], Json(session)).into_response())

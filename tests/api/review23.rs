@@ -306,3 +306,60 @@ fn takes(path: &str, name: &str) -> bool {
         _ => false,
     }
 }
+
+/// `POST /api/v1/trial-weights` refuses a solve option it does not use with
+/// 422 `unused_option` naming it (`options.discrete`, …): it answered the
+/// same suggestions with or without them, so a client asking for
+/// `"discrete": true` or `"from_run"` was not told they changed nothing.
+/// The options it uses still answer, and an unknown key stays 400
+/// `unknown_field` as on `/solve`.
+#[tokio::test]
+async fn trial_weights_refuse_the_solve_options_they_do_not_use() {
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/trial-weights");
+    let unused = [
+        ("objective", json!("min_max")),
+        ("max_mass_g", json!({"inboard": 50})),
+        ("drop_dependent_planes", json!(true)),
+        ("amplitude_noise_pct", json!(5)),
+        ("phase_noise_deg", json!(3)),
+        ("from_run", json!("zero")),
+        ("discrete", json!(true)),
+        ("discrete", json!(false)),
+        ("fit_time_limit_ms", json!(100)),
+    ];
+    for (key, value) in unused {
+        let body = json!({"session": pump(), "options": {"planes": ["inboard"], key: value}});
+        let (status, _, answer) = post(&client, &url, &body).await;
+        let (code, field, message) = error_of(&answer);
+        let want = format!("options.{key}");
+        assert_eq!(
+            (status, code.as_str(), field.as_deref()),
+            (422, "unused_option", Some(want.as_str())),
+            "{key}: {answer}"
+        );
+        assert!(message.contains(key), "{message}");
+    }
+    let used = json!({
+        "planes": ["inboard"],
+        "sensors": ["DE-H", "NDE-H"],
+        "speeds_rpm": [2950],
+        "row_weights": [{"sensor": "DE-H", "weight": 2}],
+    });
+    let (status, _, answer) =
+        post(&client, &url, &json!({"session": pump(), "options": used})).await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(
+        answer["suggestions"].as_array().map(Vec::len),
+        Some(1),
+        "{answer}"
+    );
+    let body = json!({"session": pump(), "options": {"discret": true}});
+    let (status, _, answer) = post(&client, &url, &body).await;
+    let (code, field, _) = error_of(&answer);
+    assert_eq!(
+        (status, code.as_str(), field.as_deref()),
+        (400, "unknown_field", Some("options.discret")),
+        "{answer}"
+    );
+}

@@ -112,6 +112,52 @@ fn nearest_stack(
     (best.0, best.1)
 }
 
+/// The solve options a trial weight is sized with; any other is refused.
+const USED_OPTIONS: &str =
+    "planes, sensors, speeds_rpm, row_weights, influence_coefficients and coefficients_from";
+
+/// Refuse a solve option that sizing a trial weight does not use (422
+/// `unused_option`, naming `options.<key>`): answering as if it were not
+/// there left a client that asked for `discrete` or `from_run` believing it
+/// had been applied. Its value does not matter: the option is not read.
+pub fn check_options(options: &SolveOptions) -> Result<(), InputError> {
+    // Named one by one, so that a new solve option must be placed here.
+    let SolveOptions {
+        speeds_rpm: _,
+        sensors: _,
+        planes: _,
+        row_weights: _,
+        influence_coefficients: _,
+        coefficients_from: _,
+        objective,
+        max_mass_g,
+        drop_dependent_planes,
+        amplitude_noise_pct,
+        phase_noise_deg,
+        from_run,
+        discrete,
+        fit_time_limit_ms,
+    } = options;
+    let unused = [
+        ("objective", objective.is_some()),
+        ("max_mass_g", max_mass_g.is_some()),
+        ("drop_dependent_planes", drop_dependent_planes.is_some()),
+        ("amplitude_noise_pct", amplitude_noise_pct.is_some()),
+        ("phase_noise_deg", phase_noise_deg.is_some()),
+        ("from_run", from_run.is_some()),
+        ("discrete", discrete.is_some()),
+        ("fit_time_limit_ms", fit_time_limit_ms.is_some()),
+    ];
+    match unused.iter().find(|(_, given)| *given) {
+        None => Ok(()),
+        Some((key, _)) => Err(InputError::invalid(
+            "unused_option",
+            format!("options.{key}"),
+            format!("{key} is a solve option that sizing a trial weight does not use (it uses {USED_OPTIONS}): leave it out"),
+        )),
+    }
+}
+
 /// Suggest a trial weight per selected plane. `coefficients`: a known influence
 /// matrix (rows × planes, internal frame) when supplied or stored; without it
 /// the session's own trial runs are used if they determine one, else the rotor.
@@ -120,6 +166,7 @@ pub fn suggest(
     options: &SolveOptions,
     coefficients: Option<DMatrix<Complex64>>,
 ) -> Result<Vec<TrialSuggestion>, InputError> {
+    check_options(options)?;
     // A trim job whose options name no coefficients is sized from the trim's.
     if let Some(with_trim) = crate::balancing::job::trim::options_for(session, options) {
         return suggest(session, &with_trim, coefficients)
@@ -225,7 +272,9 @@ pub struct TrialRequest {
     /// A session; its reference run alone is enough.
     pub session: Session,
     /// Solve options: `planes`, `sensors`, `speeds_rpm` and `row_weights` choose
-    /// the planes suggested for and the vibration a suggestion is sized against.
+    /// the planes suggested for and the vibration a suggestion is sized against;
+    /// `influence_coefficients` or `coefficients_from` give coefficients. Any
+    /// other solve option is refused (422 `unused_option`, naming it).
     #[serde(default)]
     pub options: SolveOptions,
 }

@@ -38,7 +38,7 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
         (status = 200, description = "One suggestion per selected plane, and the conventions of their angles", body = TrialAnswer),
         MalformedJson,
         BodyRefused,
-        (status = 422, description = "Invalid session or options, or nothing to size a trial weight from", body = ErrorBody),
+        (status = 422, description = "Invalid session or options, a solve option sizing does not use (`unused_option`, naming it: only `planes`, `sensors`, `speeds_rpm`, `row_weights`, `influence_coefficients` and `coefficients_from` are taken), or nothing to size a trial weight from", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn trial_weights(

@@ -125,10 +125,12 @@ async fn the_commands_refuse_a_sessions_texts_and_machine_as_the_service_does() 
     assert_eq!(code, 0, "{out}");
 }
 
-/// `coefficients_from` beside `influence_coefficients`, or with a version
-/// below 1, is refused by `fieldbal solve` as `/api/v1/solve` refuses it
-/// (before any machine is looked up): it solved with the supplied
-/// coefficients and echoed the `coefficients_from` it had not read.
+/// `coefficients_from` beside `influence_coefficients`, with a version
+/// below 1 or a machine id the id rule refuses, is refused by `fieldbal
+/// solve` as `/api/v1/solve` refuses it (before any machine is looked up):
+/// it solved with the supplied coefficients and echoed the
+/// `coefficients_from` it had not read, or said the coefficients are read by
+/// the service where the service refused the id (which it looked up).
 #[tokio::test]
 async fn the_solve_command_refuses_coefficients_from_as_the_service_does() {
     let (_dir, server, client) = fresh_server().await;
@@ -153,12 +155,20 @@ async fn the_solve_command_refuses_coefficients_from_as_the_service_does() {
         json!({"coefficients_from": {"machine": "P-1"}, "influence_coefficients": coefficients}),
         json!({"coefficients_from": {"machine": "P-1", "version": 0}}),
         json!({"coefficients_from": {"machine": "P-1", "version": -3}}),
+        // A machine id the id rule refuses, as a trim job's is refused.
+        json!({"coefficients_from": {"machine": ""}}),
+        json!({"coefficients_from": {"machine": "P-1\u{0}"}}),
+        json!({"coefficients_from": {"machine": "m".repeat(65)}}),
     ];
     for options in cases {
         let body = json!({ "session": pump(), "options": options });
         let (status, _, answer) = post(&client, &server.url("/api/v1/solve"), &body).await;
         assert_eq!(status, 422, "{answer}");
         let want = error_of(&answer);
+        assert_ne!(
+            want.0, "unknown_machine",
+            "the id is refused, not looked up: {answer}"
+        );
         let wrapped = write(files.path(), "wrapped.json", &body);
         assert_eq!(cli_error(&["solve", &wrapped], b"", ""), want, "{options}");
         let bare = write(files.path(), "bare.json", &pump());

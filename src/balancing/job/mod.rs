@@ -32,8 +32,9 @@ pub fn solve(session: &Session, options: &SolveOptions) -> Result<Solution, Inpu
 }
 
 /// What a request's `coefficients_from` must be before any store is asked
-/// for it: not beside `influence_coefficients` (the one or the other), and
-/// a `version` from 1. The one rule of the service (which then reads the
+/// for it: not beside `influence_coefficients` (the one or the other), a
+/// `machine` that is a machine id (`validate::check_machine_id`) and a
+/// `version` from 1. The one rule of the service (which then reads the
 /// machine's coefficients into `influence_coefficients`) and of `fieldbal
 /// solve` (which cannot read them, and says so when solving); errors name
 /// `options.…`.
@@ -48,6 +49,12 @@ pub fn check_coefficients_from(options: &SolveOptions) -> Result<(), InputError>
             "give influence_coefficients or coefficients_from, not both",
         ));
     }
+    // The id rule, as for a trim job's `coefficients_from`: an id no
+    // machine can have is a bad value, not one to look up.
+    crate::balancing::validate::check_machine_id(
+        || "options.coefficients_from.machine".into(),
+        &from.machine,
+    )?;
     // Below 1 no machine could have the version: a bad value, said as a
     // machine's coefficients and a trim job say it.
     if let Some(v) = from.version.filter(|&v| v < 1) {

@@ -83,25 +83,68 @@ pub fn if_match_versions(headers: &HeaderMap) -> Result<Option<Vec<i64>>, ApiErr
 /// The entity tags `If-Match` names, as given: `None` without the header
 /// or with `*` (any current representation). Compared strongly (RFC 9110
 /// §13.1.1): a weak tag (`W/"…"`) is kept as given and so matches no ETag
-/// the service gives, all of them strong.
+/// the service gives, all of them strong. Several `If-Match` lines are one
+/// list (RFC 9110 §5.3). A value that is neither `*` nor a list of
+/// entity-tags (an unquoted tag, `*` among tags, none at all) is refused
+/// with 400 naming `If-Match`: taken as a tag that matches nothing, it was
+/// answered 412 "changed meanwhile" even when it named the current version.
 pub fn if_match_tags(headers: &HeaderMap) -> Result<Option<Vec<String>>, ApiError> {
-    let Some(value) = headers.get(header::IF_MATCH) else {
+    let mut lines = headers.get_all(header::IF_MATCH).iter().peekable();
+    if lines.peek().is_none() {
         return Ok(None);
+    }
+    let invalid = |message: String| {
+        ApiError::new(StatusCode::BAD_REQUEST, "invalid_header", message).with_field("If-Match")
     };
-    let text = value.to_str().map_err(|_| {
-        ApiError::new(
-            StatusCode::BAD_REQUEST,
-            "invalid_header",
-            "If-Match is not ASCII",
-        )
-        .with_field("If-Match")
-    })?;
+    let mut text = String::new();
+    for (i, line) in lines.enumerate() {
+        let line = line
+            .to_str()
+            .map_err(|_| invalid("If-Match is not ASCII".into()))?;
+        if i > 0 {
+            text.push(',');
+        }
+        text.push_str(line);
+    }
     if text.trim() == "*" {
         return Ok(None);
     }
-    Ok(Some(
-        text.split(',').map(|t| t.trim().to_string()).collect(),
-    ))
+    entity_tags(&text).map(Some).ok_or_else(|| {
+        let shown: String = text.chars().take(80).collect();
+        invalid(format!(
+            "If-Match is `*` or a comma-separated list of entity-tags, each quoted as the ETag gives it (\"v3\"); got '{shown}'"
+        ))
+    })
+}
+
+/// The entity-tags of a list (RFC 9110 §8.8.3, `#entity-tag`): each
+/// `"…"` or `W/"…"` of visible characters but `"`, separated by commas
+/// (empty elements allowed), as written; `None` when it is not such a list
+/// or names no tag.
+fn entity_tags(text: &str) -> Option<Vec<String>> {
+    let mut tags = Vec::new();
+    let mut rest = text;
+    loop {
+        rest = rest.trim_start_matches([' ', '\t', ',']);
+        if rest.is_empty() {
+            break;
+        }
+        let opaque = rest.strip_prefix("W/").unwrap_or(rest).strip_prefix('"')?;
+        let end = opaque.find('"')?;
+        if !opaque[..end]
+            .bytes()
+            .all(|b| b == 0x21 || (0x23..=0x7e).contains(&b))
+        {
+            return None;
+        }
+        let len = rest.len() - opaque.len() + end + 1;
+        tags.push(rest[..len].to_string());
+        rest = rest[len..].trim_start_matches([' ', '\t']);
+        if !rest.is_empty() {
+            rest = rest.strip_prefix(',')?;
+        }
+    }
+    (!tags.is_empty()).then_some(tags)
 }
 
 /// Paging of a list: `limit` 1 to `max` (default `default`), `offset` 0 or more.

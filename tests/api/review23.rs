@@ -373,3 +373,75 @@ async fn trial_weights_refuse_the_solve_options_they_do_not_use() {
         "{answer}"
     );
 }
+
+/// An `If-Match` that is not `*` or a list of entity-tags (an unquoted
+/// tag, an unterminated one, a bare `W/`, `*` in a list, nothing at all) is
+/// refused with 400 `invalid_header` naming `If-Match`, on a run's PUT and
+/// a session's DELETE, nothing changed: it was answered 412 "changed
+/// meanwhile", even when the unquoted tag named the current version, so a
+/// client re-read and sent the same header for ever. Several `If-Match`
+/// lines are one list (RFC 9110 §5.3): a tag on the second line matches,
+/// where only the first line was read.
+#[tokio::test]
+async fn a_malformed_if_match_is_refused_and_its_lines_are_one_list() {
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &pump()).await;
+    let session = server.url(&format!(
+        "/api/v1/sessions/{}",
+        created["id"].as_str().unwrap()
+    ));
+    let run = format!("{session}/runs/zero");
+    let (status, headers, body) = send(client.get(&run)).await;
+    assert_eq!(status, 200, "{body}");
+    let tag = headers["etag"].to_str().unwrap().to_string();
+    let malformed = [
+        tag.trim_matches('"').to_string(),
+        format!("\"{tag}"),
+        tag[..tag.len() - 1].to_string(),
+        "W/".into(),
+        ",".into(),
+        "".into(),
+        format!("*, {tag}"),
+        "\"v 1\"".into(),
+        format!("{tag} {tag}"),
+    ];
+    for value in &malformed {
+        let (status, _, err) = send(client.put(&run).header("If-Match", value).json(&body)).await;
+        let (code, field, message) = error_of(&err);
+        assert_eq!(
+            (status, code.as_str(), field.as_deref()),
+            (400, "invalid_header", Some("If-Match")),
+            "PUT If-Match: {value}: {message}"
+        );
+        let (status, _, err) = send(client.delete(&session).header("If-Match", value)).await;
+        let (code, field, message) = error_of(&err);
+        assert_eq!(
+            (status, code.as_str(), field.as_deref()),
+            (400, "invalid_header", Some("If-Match")),
+            "DELETE If-Match: {value}: {message}"
+        );
+    }
+    let (_, versions, _) = send(client.get(format!("{run}/versions"))).await;
+    assert_eq!(versions["x-total-count"], "1", "nothing was stored");
+    // Two lines, the current tag on the second: they match as one list.
+    let (status, _, answer) = send(
+        client
+            .put(&run)
+            .header("If-Match", "\"v7\"")
+            .header("If-Match", &tag)
+            .json(&body),
+    )
+    .await;
+    assert_eq!(status, 200, "{answer}");
+    // The session as it is now (the same run stored again).
+    let (_, headers, _) = send(client.get(&session)).await;
+    let now = headers["etag"].to_str().unwrap().to_string();
+    let (status, _, answer) = send(
+        client
+            .delete(&session)
+            .header("If-Match", "W/\"x\"")
+            .header("If-Match", format!("\"a,b\", {now}")),
+    )
+    .await;
+    assert_eq!(status, 204, "{answer}");
+}

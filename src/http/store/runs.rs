@@ -122,7 +122,7 @@ pub async fn append(
 #[utoipa::path(put, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
     params(("id" = String, Path, description = "Session id"),
            ("run_id" = String, Path, description = "Run id"),
-           ("If-Match" = Option<String>, Header, description = "The run's ETag: refuse (412) if the run changed since (compared strongly: a weak tag `W/\"…\"` never matches)")),
+           ("If-Match" = Option<String>, Header, description = "The run's ETag: refuse (412) if the run changed since (compared strongly: a weak tag `W/\"…\"` never matches; a value that is neither `*` nor a list of quoted entity-tags is refused with 400 `invalid_header`)")),
     request_body = Run,
     responses(
         (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored),

@@ -163,6 +163,7 @@ pub async fn get(
            ("If-Match" = Option<String>, Header, description = "The session's ETag as read: deleted only if it has not changed since (strong comparison; `*` or no header: unconditionally)")),
     responses(
         (status = 204, description = "Deleted with its runs and solutions"),
+        (status = 400, description = "An If-Match that is neither `*` nor a list of quoted entity-tags (`invalid_header`, naming `If-Match`)", body = ErrorBody),
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 412, description = "The session changed since its ETag was read (or `If-Match` names no ETag of it): nothing deleted", body = ErrorBody),
     ))]

@@ -23,10 +23,19 @@ pub fn idempotency(
     path: &str,
     body: &impl Serialize,
 ) -> Result<Option<Idem>, ApiError> {
-    let Some(value) = headers.get(IDEMPOTENCY_KEY) else {
+    let lines: Vec<&str> = headers
+        .get_all(IDEMPOTENCY_KEY)
+        .iter()
+        .map(|v| v.to_str().unwrap_or(""))
+        .collect();
+    if lines.is_empty() {
         return Ok(None);
-    };
-    let key = value.to_str().unwrap_or("");
+    }
+    // Several lines are the one line a proxy may join them into (RFC 9110
+    // §5.3), which the key's rule refuses: the first alone was used, so a
+    // retry with its lines in another order stored the request again.
+    let joined = lines.join(", ");
+    let key = joined.as_str();
     if key.is_empty() || key.len() > MAX_KEY_LEN || !key.bytes().all(|b| b.is_ascii_graphic()) {
         return Err(InputError::invalid(
             "invalid_header",

@@ -445,3 +445,43 @@ async fn a_malformed_if_match_is_refused_and_its_lines_are_one_list() {
     .await;
     assert_eq!(status, 204, "{answer}");
 }
+
+/// Two `Idempotency-Key` lines are refused as the one line a proxy joins
+/// them into (`a1, a2`, which holds a space) is: 422 `invalid_header`
+/// naming the header, nothing stored. The first line alone was used, so a
+/// retry whose lines came in the other order stored the session again.
+#[tokio::test]
+async fn two_idempotency_keys_are_refused_as_their_joined_line_is() {
+    let (_dir, server, client) = fresh_server().await;
+    let store = server.url("/api/v1/sessions");
+    for keys in [["k-1", "k-2"], ["k-2", "k-1"], ["k-1", "k-1"]] {
+        let (status, _, err) = send(
+            client
+                .post(&store)
+                .header("Idempotency-Key", keys[0])
+                .header("Idempotency-Key", keys[1])
+                .json(&pump()),
+        )
+        .await;
+        let joined = send(
+            client
+                .post(&store)
+                .header("Idempotency-Key", keys.join(", "))
+                .json(&pump()),
+        )
+        .await;
+        let (code, field, _) = error_of(&err);
+        assert_eq!(
+            (status, code.as_str(), field.as_deref()),
+            (422, "invalid_header", Some("Idempotency-Key")),
+            "{keys:?}: {err}"
+        );
+        assert_eq!(
+            (status, error_of(&err)),
+            (joined.0, error_of(&joined.2)),
+            "{keys:?}"
+        );
+    }
+    let (_, _, list) = send(client.get(&store)).await;
+    assert_eq!(list["total"], 0, "nothing was stored: {list}");
+}

@@ -235,6 +235,7 @@ pub fn app(state: AppState) -> Router {
             "/api/v1/machines/{id}/coefficients",
             post(machines::pool_coefficients).get(machines::get_coefficients),
         )
+        .route_layer(axum::middleware::from_fn(no_query_on_writes))
         .with_state(state);
     Router::new()
         .merge(api)
@@ -328,6 +329,27 @@ async fn time_limit(
 
 async fn not_found() -> ApiError {
     ApiError::not_found("no such resource")
+}
+
+/// No write of the API (POST, PUT, DELETE) takes a query parameter: one is
+/// refused with 400 `invalid_query` naming it, before anything is done, as a
+/// GET refuses one it does not take (`headers::NoParams`). Ignored, `POST
+/// /api/v1/solve?discrete=true` answered a solve without the fit it asked for.
+async fn no_query_on_writes(
+    req: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    let read = matches!(
+        *req.method(),
+        axum::http::Method::GET | axum::http::Method::HEAD
+    );
+    if !read {
+        if let Err(e) = headers::NoParams::check(axum::extract::Query::try_from_uri(req.uri())) {
+            return e.into_response();
+        }
+    }
+    next.run(req).await
 }
 
 async fn method_not_allowed() -> ApiError {

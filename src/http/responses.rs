@@ -12,7 +12,10 @@ use super::error::ErrorBody;
 /// A request body that is not JSON, or JSON with an unknown field
 /// (`extract::JsonBody`).
 #[derive(IntoResponses)]
-#[response(status = 400, description = "Malformed JSON or unknown field")]
+#[response(
+    status = 400,
+    description = "Malformed JSON or unknown field; or a query parameter (`invalid_query`: no write takes one)"
+)]
 pub struct MalformedJson(pub ErrorBody);
 
 /// A request body over the body limit, or without `Content-Type:

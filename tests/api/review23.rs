@@ -287,14 +287,15 @@ async fn every_get_refuses_a_query_parameter_it_does_not_take() {
             "GET {path}: {body}"
         );
     }
+    // The document says so: every GET's 400 is about its query parameters
+    // (not only the edge's general "malformed request").
     let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
     for (path, item) in doc["paths"].as_object().unwrap() {
         if let Some(get) = item.get("get").filter(|_| path.starts_with("/api/v1/")) {
-            assert!(
-                get["responses"].get("400").is_some(),
-                "GET {path} lists no 400: {}",
-                get["responses"]
-            );
+            let said = get["responses"]["400"]["description"]
+                .as_str()
+                .unwrap_or("");
+            assert!(said.contains("query parameter"), "GET {path}: 400 {said:?}");
         }
     }
 }
@@ -484,4 +485,67 @@ async fn two_idempotency_keys_are_refused_as_their_joined_line_is() {
     }
     let (_, _, list) = send(client.get(&store)).await;
     assert_eq!(list["total"], 0, "nothing was stored: {list}");
+}
+
+/// No write of the API takes a query parameter: a POST, PUT or DELETE
+/// with one is refused with 400 `invalid_query` naming it, nothing done.
+/// `POST /api/v1/solve?discrete=true` answered the solve without a fit,
+/// `POST …/solutions?dry_run=1` stored a solution, and `DELETE
+/// …/sessions/{id}?if_match=…` deleted unconditionally.
+#[tokio::test]
+async fn no_write_takes_a_query_parameter() {
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &pump()).await;
+    let session = format!("/api/v1/sessions/{}", created["id"].as_str().unwrap());
+    let (_, _, run) = send(client.get(server.url(&format!("{session}/runs/zero")))).await;
+    let solve = json!({"session": pump()});
+    let writes = [
+        (
+            "POST",
+            "/api/v1/solve?discrete=true".to_string(),
+            solve.clone(),
+        ),
+        ("POST", "/api/v1/trial-weights?planes=inboard".into(), solve),
+        ("POST", format!("{session}/solutions?dry_run=1"), json!({})),
+        ("PUT", format!("{session}/runs/zero?version=1"), run),
+        ("DELETE", format!("{session}?if_match=x"), Value::Null),
+        (
+            "POST",
+            "/api/v1/machines?upsert".into(),
+            json!({"id": "P-1"}),
+        ),
+    ];
+    for (method, path, body) in writes {
+        let mut req = client.request(method.parse().unwrap(), server.url(&path));
+        if !body.is_null() {
+            req = req.json(&body);
+        }
+        let (status, _, err) = send(req).await;
+        let (code, field, message) = error_of(&err);
+        let want = path.split('?').nth(1).unwrap().split('=').next().unwrap();
+        assert_eq!(
+            (status, code.as_str(), field.as_deref()),
+            (400, "invalid_query", Some(want)),
+            "{method} {path}: {message}"
+        );
+    }
+    // Nothing was done: the session is there with no solution, no run
+    // version was added, no machine made.
+    let (status, _, _) = send(client.get(server.url(&session))).await;
+    assert_eq!(status, 200);
+    let (_, headers, _) = send(client.get(server.url(&format!("{session}/solutions")))).await;
+    assert_eq!(headers["x-total-count"], "0");
+    let (_, headers, _) =
+        send(client.get(server.url(&format!("{session}/runs/zero/versions")))).await;
+    assert_eq!(headers["x-total-count"], "1");
+    let (status, _, _) = send(client.get(server.url("/api/v1/machines/P-1"))).await;
+    assert_eq!(status, 404);
+    // An empty query is no parameter.
+    let (status, _, body) = post(
+        &client,
+        &server.url("/api/v1/solve?"),
+        &json!({"session": pump()}),
+    )
+    .await;
+    assert_eq!(status, 200, "{body}");
 }

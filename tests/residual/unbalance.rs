@@ -196,6 +196,41 @@ fn the_first_position_repeated_at_the_end_is_accepted_and_used() {
     assert!((got.residual_unbalance_gmm - 120.0).abs() < 1e-8);
 }
 
+/// Up to 180 positions (2° apart, four times the spacing's tolerance) are a
+/// check; more are refused by their count. 3,600 were refused claiming
+/// "3599 positions must be 0.1° apart" and that 180.1° repeated 180° (the
+/// 0.5° tolerance cannot tell positions under 1° apart), and 181 were taken.
+#[test]
+fn more_positions_than_the_tolerance_tells_apart_are_refused_by_their_count() {
+    let rotor = Rotor::new(120.0, 300.0, Conventions::default());
+    let got = check(&request(&rotor, 1.5 * allowable(), 180, true, None)).unwrap();
+    assert_eq!(got.positions, 180);
+    assert!((got.residual_unbalance_gmm - 120.0).abs() < 1e-8);
+    for n in [181, 360, 3600] {
+        let err = check(&request(&rotor, 1.5 * allowable(), n, true, None)).expect_err("too many");
+        assert_eq!(
+            (err.code, err.field.as_deref()),
+            ("too_many_positions", Some("readings")),
+            "{n}: {err:?}"
+        );
+        assert!(
+            err.message.contains(&format!("{n} given")),
+            "{}",
+            err.message
+        );
+    }
+    // 180 positions and the first repeated at the end: 181 readings, a check.
+    let mut closed = request(&rotor, 1.5 * allowable(), 180, true, None);
+    let first = closed.readings[0].clone();
+    closed
+        .readings
+        .push(fieldbal::balancing::acceptance::PositionReading {
+            angle_deg: 360.0,
+            ..first
+        });
+    assert_eq!(check(&closed).unwrap().positions, 180);
+}
+
 #[test]
 fn bad_requests_are_refused_naming_the_field() {
     let rotor = Rotor::new(120.0, 300.0, Conventions::default());

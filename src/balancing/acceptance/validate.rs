@@ -15,6 +15,10 @@ use crate::balancing::validate::{
 /// Fewest distinct positions: the amplitude fit has 3 unknowns and needs one
 /// more reading to test the fit at all.
 pub const MIN_POSITIONS: usize = 4;
+/// The most positions a check takes: 2° apart, four times the spacing's
+/// tolerance, so that a position and its neighbour are told apart (under 1°
+/// apart the 0.5° tolerance cannot say which reading repeats which).
+pub const MAX_POSITIONS: usize = 180;
 /// How far a position may be from its place on the equal spacing, degrees.
 const SPACING_TOL_DEG: f64 = 0.5;
 

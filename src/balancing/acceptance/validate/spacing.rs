@@ -2,7 +2,7 @@
 //! (the first may be repeated at the end). A position off the spacing is
 //! named against the grid most readings fit (session 16).
 
-use super::{MIN_POSITIONS, SPACING_TOL_DEG};
+use super::{MAX_POSITIONS, MIN_POSITIONS, SPACING_TOL_DEG};
 use crate::balancing::acceptance::ResidualRequest;
 use crate::balancing::error::{shown, InputError};
 use crate::balancing::phasor::{angle_diff_deg, wrap_deg};
@@ -15,6 +15,11 @@ use crate::balancing::phasor::{angle_diff_deg, wrap_deg};
 /// fit (`best_origin`), so a wrong readings[0] is named itself rather than
 /// its correct neighbour (session 16); a repeat names the later reading.
 pub(super) fn spacing(req: &ResidualRequest) -> Result<usize, InputError> {
+    // Counted before the spacing is read: past the most a tolerance tells
+    // apart, a repeat of the first position cannot be told either.
+    if req.readings.len() > MAX_POSITIONS + 1 {
+        return Err(too_many(req.readings.len()));
+    }
     let angles: Vec<f64> = req.readings.iter().map(|r| r.angle_deg).collect();
     let repeat =
         angles.len() >= 2 && angle_diff_deg(angles[0], angles[angles.len() - 1]) <= SPACING_TOL_DEG;
@@ -27,6 +32,9 @@ pub(super) fn spacing(req: &ResidualRequest) -> Result<usize, InputError> {
                 "the check needs the trial weight at {MIN_POSITIONS} or more equally spaced positions (API asks 6 or 12); {n} given"
             ),
         ));
+    }
+    if n > MAX_POSITIONS {
+        return Err(too_many(n));
     }
     let angles = &angles[..n];
     let step = 360.0 / n as f64;
@@ -75,6 +83,16 @@ pub(super) fn spacing(req: &ResidualRequest) -> Result<usize, InputError> {
             "{n} positions must be {step:.1}° apart, each once (the first may be repeated at the end); {what}{also}"
         ),
     ))
+}
+
+fn too_many(n: usize) -> InputError {
+    InputError::invalid(
+        "too_many_positions",
+        "readings",
+        format!(
+            "the check takes at most {MAX_POSITIONS} positions, 2° apart (API asks 6 or 12; the first may be repeated at the end); {n} given"
+        ),
+    )
 }
 
 /// The readings off the grid of `step` through `angles[origin]`, in order:

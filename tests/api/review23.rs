@@ -549,3 +549,37 @@ async fn no_write_takes_a_query_parameter() {
     .await;
     assert_eq!(status, 200, "{body}");
 }
+
+/// `fieldbal coefficients` pools one machine's sessions, as the service
+/// does: files that name two machines are refused naming the second's
+/// `machine` (they were pooled into one set of coefficients). Files that
+/// name none pool with those that name one.
+#[test]
+fn the_coefficients_command_pools_one_machines_sessions() {
+    let files = tempfile::tempdir().unwrap();
+    let named = |name: &str, machine: Option<&str>| {
+        let mut s = pump();
+        if let Some(m) = machine {
+            s["machine"] = json!(m);
+        }
+        write(files.path(), name, &s)
+    };
+    let (a, b, c) = (
+        named("a.json", Some("P-1")),
+        named("b.json", Some("P-2")),
+        named("c.json", None),
+    );
+    let (code, field, message) = cli_error(&["coefficients", &c, &a, &b], b"", "");
+    assert_eq!(
+        (code.as_str(), field.as_deref()),
+        ("other_machine", Some("sessions[2].machine")),
+        "{message}"
+    );
+    assert!(
+        message.contains("P-1") && message.contains("P-2"),
+        "{message}"
+    );
+    let (status, pooled) = fieldbal(&["coefficients", &c, &a], b"");
+    assert_eq!(status, 0, "{pooled}");
+    assert!(pooled["influence_coefficients"].is_array(), "{pooled}");
+}

@@ -112,6 +112,36 @@ pub fn check_names<S: AsRef<str>>(names: &[S]) -> Result<(), InputError> {
     Ok(())
 }
 
+/// One machine's sessions: a coefficient version is one machine's. Sessions
+/// that name no machine pool with those that name one (`fieldbal
+/// coefficients` pools files; the service pools only sessions of the
+/// machine it stores the version under). The error names the first
+/// session whose `machine` differs from an earlier one's.
+fn check_one_machine(names: &[&str], checked: &[Checked<'_>]) -> Result<(), InputError> {
+    let mut first: Option<(usize, &str)> = None;
+    for (i, c) in checked.iter().enumerate() {
+        let Some(m) = c.session.machine.as_deref() else {
+            continue;
+        };
+        match first {
+            None => first = Some((i, m)),
+            Some((j, n)) if n != m => {
+                return Err(InputError::invalid(
+                    "other_machine",
+                    format!("sessions[{i}].machine"),
+                    format!(
+                        "session '{}' is of machine '{m}' and session '{}' of '{n}': coefficients are pooled from one machine's sessions",
+                        names.get(i).unwrap_or(&""),
+                        names.get(j).unwrap_or(&"")
+                    ),
+                ))
+            }
+            Some(_) => {}
+        }
+    }
+    Ok(())
+}
+
 fn no_session() -> InputError {
     InputError::invalid("invalid_value", "sessions", "list at least one session")
 }
@@ -138,6 +168,7 @@ pub fn pool_checked(
     options: &PoolOptions,
 ) -> Result<Pooled, InputError> {
     let noise = check_options(checked.len(), options)?;
+    check_one_machine(names, checked)?;
     let first = &checked[0];
     let conv = first.conventions;
     // Rows of the first session found in every session: index per session.

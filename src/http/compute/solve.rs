@@ -166,6 +166,9 @@ mod tests {
         );
         assert_eq!(within_solve_request(none).field, None);
         assert_eq!(within_options(opt).field.as_deref(), Some("planes"));
-        assert_eq!(within_options(run).field, None);
+        // The stored session's fault, named as /solve names it.
+        assert_eq!(within_options(run).field.as_deref(), Some("session.runs"));
+        let whole = InputError::invalid("x", "options", "m");
+        assert_eq!(within_options(whole).field, None);
     }
 }

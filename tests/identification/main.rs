@@ -15,3 +15,4 @@ mod partial;
 mod properties;
 mod ranges;
 mod rotor;
+mod split;

@@ -315,13 +315,16 @@ fn fit_one(
     // the fitted ones were noise, a negative damping among them (review,
     // session 20); the damping ratio's bound says what the readings allow.
     // Nor does a resolved one whose split into b and q is not: b/m within its
-    // resolution of zero (or below it). With q estimated, 2 % noise gave
-    // damping coefficients from 167 to 8207 N·s/m for a true 3848.
+    // resolution of zero (or below it), and with q estimated within twice it
+    // or with under three degrees of freedom (`damping::split_resolved`).
+    // With q estimated, 2 % noise gave damping coefficients from 167 to
+    // 8207 N·s/m for a true 3848.
     let split = damping::split_resolution(&fit, setup, &points);
     let b_over_m = fit.b / fit.m;
-    let resolved = !damping.bounds && split.is_some_and(|(rb, _)| b_over_m > rb);
+    let resolved = !damping.bounds
+        && split.is_some_and(|(rb, _)| damping::split_resolved(setup, points.len(), b_over_m, rb));
     if !damping.bounds && !resolved {
-        warn(out, "damping_split_unresolved", &plane.id, format!("{label}: the readings give the damping ratio of the mode at {critical:.0} rpm, but cannot split it into direct damping and cross-coupling (b/m {b_over_m:.3e} 1/s, resolution {}); neither coefficient is given. Fit with cross_coupling \"zero\" if the rotor has none, or read more speeds across the resonance", split.map_or("none".to_string(), |(rb, _)| format!("{rb:.2e}"))));
+        warn(out, "damping_split_unresolved", &plane.id, format!("{label}: the readings give the damping ratio of the mode at {critical:.0} rpm, but cannot split it into direct damping and cross-coupling (b/m {b_over_m:.3e} 1/s, resolution {}{}); neither coefficient is given. Fit with cross_coupling \"zero\" if the rotor has none, or read more speeds across the resonance", split.map_or("none".to_string(), |(rb, _)| format!("{rb:.2e}")), if setup.coupling == Coupling::Estimated { format!("; with the cross-coupling estimated b/m must exceed {} resolutions, with at least {} degrees of freedom", damping::SPLIT_CLEARANCE, damping::SPLIT_MIN_DOF) } else { String::new() }));
     }
     out.results.push(RotorResult {
         sensor: sensor.id.clone(),

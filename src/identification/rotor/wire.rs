@@ -117,7 +117,8 @@ pub struct RotorResult {
     /// ones are then noise (a little below zero, or large and cancelling in
     /// `b − q/ω_n`), and the damping ratio's bound is all the readings tell.
     /// Absent too when the damping ratio is resolved but its split into `b`
-    /// and `q` is not (`b/m` within its resolution of zero, warning
+    /// and `q` is not (`b/m` within its resolution of zero; with `q`
+    /// estimated, within twice it or under 3 degrees of freedom; warning
     /// `damping_split_unresolved`): synchronous readings fix `ωb − q` near the
     /// critical and split it only through the speed's change across the
     /// resonance.

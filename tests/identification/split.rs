@@ -66,24 +66,30 @@ fn b_over_m_and_q_over_m_hold_the_truth_about_95_percent_of_the_times_they_are_g
         sensor_turn: -0.4,
         ..Jeffcott::with(150.0, 2450.0, zeta)
     };
-    // The split unresolved: three speeds (one degree of freedom), and eight
-    // across the critical.
+    // The split barely resolved if at all: three speeds (one degree of
+    // freedom), four, and eight across the critical (the old gate: 10 of 14,
+    // 6 of 8 and 2 of 72 given missed). A record given where the split is
+    // unresolved misses whatever the gate (noise pushed b/m up to pass it);
+    // a gate can only make such records rare: under 1 % of them.
+    let mut misses = 0;
     for (grid, noise) in [
         (vec![2000.0, 2400.0, 2800.0], 0.02),
         (vec![2000.0, 2300.0, 2600.0, 2900.0], 0.02),
         (speeds(1715.0, 3185.0, 8), 0.01),
     ] {
         let (given, missed) = tally(turned(0.05), &grid, noise, 300);
-        println!(
-            "{} speeds, unresolved: {missed} of {given} given missed",
-            grid.len()
-        );
+        println!("{} speeds: {missed} of {given} given missed", grid.len());
         assert!(
             missed <= allowed_misses(given),
             "{} speeds: {missed} of {given} given missed",
             grid.len()
         );
+        misses += missed;
     }
+    assert!(
+        misses <= 9,
+        "{misses} of 900 records were given a b/m or q/m that missed"
+    );
     // Resolved: ζ 0.2 read at 25 speeds from 0.3 to 1.7 times the critical
     // with 0.5 % noise. Given most times, and right.
     let grid = speeds(735.0, 4165.0, 25);

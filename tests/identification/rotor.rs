@@ -465,9 +465,11 @@ fn the_damping_resolution_covers_the_truth_about_95_percent_of_the_time_even_at_
 /// answered damping coefficients from 167 to 8207 N·s/m (true 3848) and
 /// cross-coupling from −9.4e5 to 1.1e6 N/m as plain numbers, while the
 /// damping ratio agreed within 4 % (review, session 20). Each is now given
-/// with its 95 % resolution, which covers the truth; where that reaches
-/// zero the split is not resolved: neither is given (a warning says so),
-/// never a negative damping coefficient as a number.
+/// with its 95 % resolution, and only where b/m clears twice it (session
+/// 23: at this noise 1 record of 40; how often the given ones hold is
+/// measured in tests/identification/split.rs); otherwise the split is not
+/// resolved: neither is given (a warning says so), never a negative
+/// damping coefficient as a number.
 #[test]
 fn the_split_of_damping_and_cross_coupling_is_given_with_its_resolution_or_not_at_all() {
     let rotor = Jeffcott {
@@ -492,8 +494,8 @@ fn the_split_of_damping_and_cross_coupling_is_given_with_its_resolution_or_not_a
                 let b = b.as_f64().unwrap();
                 let (rb, rq) = (num(r, "b_over_m_resolution"), num(r, "q_over_m_resolution"));
                 assert!(
-                    b > rb,
-                    "seed {seed}: b/m within its resolution of zero: {out}"
+                    b > 2.0 * rb,
+                    "seed {seed}: b/m within twice its resolution of zero: {out}"
                 );
                 assert!(num(r, "damping_n_s_per_m") > 0.0, "seed {seed}: {out}");
                 if (b - b_over_m).abs() > rb || num(r, "q_over_m").abs() > rq {

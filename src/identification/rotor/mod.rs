@@ -297,7 +297,7 @@ fn fit_one(
         .iter()
         .fold((f64::INFINITY, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
     if fit_rms_relative > POOR_FIT {
-        warn(out, "poor_fit", &plane.id, format!("{label}: the one-mass model leaves {:.0} % of the coefficients unexplained; several modes in the speed range? Fit one at a time with speed_range_rpm", 100.0 * fit_rms_relative));
+        warn(out, "poor_fit", &plane.id, format!("{label}: the one-mass model leaves {:.0} % of the coefficients unexplained: several modes in the speed range (fit one at a time with speed_range_rpm), or coefficients too noisy for their trial (a heavier trial weight, or readings averaged over more revolutions)", 100.0 * fit_rms_relative));
     }
     if critical < lo || critical > hi {
         warn(out, "critical_outside_range", &plane.id, format!("{label}: the critical speed {critical:.0} rpm lies outside the measured {lo:.0}–{hi:.0} rpm; it is extrapolated"));

@@ -149,7 +149,7 @@ pub struct RotorResult {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct RotorIdentification {
     pub results: Vec<RotorResult>,
-    /// `poor_fit` (several modes in range?), `critical_outside_range`, `no_mode`,
+    /// `poor_fit` (several modes in range, or coefficients too noisy for their trial), `critical_outside_range`, `no_mode`,
     /// `damping_unresolved` (a damping ratio within its resolution of zero),
     /// `damping_split_unresolved` (a damping ratio resolved, its split into
     /// direct damping and cross-coupling not).

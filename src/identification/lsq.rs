@@ -84,6 +84,35 @@ pub fn step(
     ))
 }
 
+/// `(AᵀA)⁻¹ v` through the SVD of the column-scaled `A` (`A = U Σ Vᵀ D`,
+/// `D` the column norms, so `(AᵀA)⁻¹ = D⁻¹ V Σ⁻² Vᵀ D⁻¹`), never forming `AᵀA`, whose condition is
+/// the square of `A`'s; `None` where `A`'s columns are dependent (the rank
+/// tolerance of [`solve`]) or fewer rows than columns.
+pub fn gram_inverse_times(a: &DMatrix<f64>, v: &DVector<f64>) -> Option<DVector<f64>> {
+    if a.nrows() < a.ncols() || !a.iter().chain(v.iter()).all(|x| x.is_finite()) {
+        return None;
+    }
+    let mut scaled = a.clone();
+    let scale = unit_columns(&mut scaled);
+    let svd = scaled.svd(false, true);
+    let vt = svd.v_t?;
+    let sigma = &svd.singular_values;
+    let smax = sigma.max();
+    if smax == 0.0 || sigma.min() <= RANK_TOLERANCE * smax {
+        return None;
+    }
+    let sv = DVector::from_iterator(v.len(), v.iter().zip(&scale).map(|(x, s)| x / s));
+    let mut w = &vt * sv;
+    for (k, x) in w.iter_mut().enumerate() {
+        *x /= sigma[k] * sigma[k];
+    }
+    let out = vt.transpose() * w;
+    Some(DVector::from_iterator(
+        out.len(),
+        out.iter().zip(&scale).map(|(x, s)| x / s),
+    ))
+}
+
 /// Scale `a`'s columns to unit norm in place; returns each column's norm
 /// (at least the smallest positive number), by which the solution of the
 /// scaled problem is divided to give the unscaled one.
@@ -133,6 +162,23 @@ mod tests {
         let x = DVector::from_vec(vec![2.0, 7e6]);
         let got = solve(a.clone(), &(&a * &x), "test").unwrap();
         assert!((got - x).norm() < 1e-6);
+    }
+
+    /// `(AᵀA)⁻¹ v` of columns 1e8 apart in size (a Gram of condition ~1e16
+    /// that a solve of `AᵀA` itself would lose): `AᵀA x = v` holds to the
+    /// precision of `A`, checked without forming `AᵀA` (`Aᵀ(A x)`).
+    #[test]
+    fn the_gram_inverse_is_had_from_the_svd_of_very_different_columns() {
+        let a = DMatrix::from_row_slice(3, 2, &[1e5, 1e-3, 2e5, 3e-3, -1e5, 5e-3]);
+        let x = DVector::from_vec(vec![2.0, 7e6]);
+        let v = a.transpose() * (&a * &x);
+        let got = gram_inverse_times(&a, &v).unwrap();
+        assert!(
+            ((&got - &x).component_div(&x)).amax() < 1e-9,
+            "{got} against {x}"
+        );
+        let dependent = DMatrix::from_row_slice(3, 2, &[1.0, 2.0, 2.0, 4.0, 3.0, 6.0]);
+        assert!(gram_inverse_times(&dependent, &DVector::from_vec(vec![1.0, 1.0])).is_none());
     }
 
     #[test]

@@ -463,11 +463,10 @@ fn corrected(
     let shift = &nn * plain - ny;
     let free: Vec<usize> = (0..cols).filter(|&j| Some(j) != held).collect();
     let k = free.len();
-    // (AᵀA)⁻¹ on the free columns, scaled to unit norm, by the SVD (lsq).
+    // (AᵀA)⁻¹ on the free columns from their SVD, never forming AᵀA (lsq).
     let sub = DMatrix::from_fn(a.nrows(), k, |r, j| a[(r, free[j])]);
-    let gram = sub.transpose() * &sub;
     let rhs = DVector::from_iterator(k, free.iter().map(|&j| shift[j]));
-    let dx = lsq::solve(gram, &rhs, "the bias of (6.1)").ok()?;
+    let dx = lsq::gram_inverse_times(&sub, &rhs)?;
     let mut x = plain.clone();
     for (i, &j) in free.iter().enumerate() {
         x[j] += dx[i];

@@ -16,6 +16,17 @@ fn pump() -> Value {
     example("pump-two-plane-exact.json")["session"].clone()
 }
 
+/// Machine P-1, created.
+async fn machine_p1(client: &reqwest::Client, server: &common::Server) {
+    let (status, _, body) = post(
+        client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "P-1"}),
+    )
+    .await;
+    assert_eq!(status, 201, "{body}");
+}
+
 /// The error's code, field and message.
 fn error_of(body: &Value) -> (String, Option<String>, String) {
     (
@@ -188,13 +199,7 @@ async fn the_solve_command_refuses_coefficients_from_as_the_service_does() {
 #[tokio::test]
 async fn the_coefficients_command_takes_the_services_rule_of_a_pool_list() {
     let (_dir, server, client) = fresh_server().await;
-    let (status, _, body) = post(
-        &client,
-        &server.url("/api/v1/machines"),
-        &json!({"id": "P-1"}),
-    )
-    .await;
-    assert_eq!(status, 201, "{body}");
+    machine_p1(&client, &server).await;
     let pool = server.url("/api/v1/machines/P-1/coefficients");
     let files = tempfile::tempdir().unwrap();
     let one = write(
@@ -231,13 +236,7 @@ async fn every_get_refuses_a_query_parameter_it_does_not_take() {
     let (_dir, server, client) = fresh_server().await;
     let mut s = pump();
     s["machine"] = json!("P-1");
-    let (status, _, body) = post(
-        &client,
-        &server.url("/api/v1/machines"),
-        &json!({"id": "P-1"}),
-    )
-    .await;
-    assert_eq!(status, 201, "{body}");
+    machine_p1(&client, &server).await;
     let (status, _, body) = post(&client, &server.url("/api/v1/sessions"), &s).await;
     assert_eq!(status, 201, "{body}");
     let id = body["id"].as_str().unwrap().to_string();

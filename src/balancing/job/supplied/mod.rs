@@ -12,7 +12,7 @@ use num_complex::Complex64;
 mod resolve;
 mod uncertainty;
 
-pub(crate) use resolve::{check_covariance, check_unit};
+pub(crate) use resolve::{check_entry, check_unit};
 pub use resolve::{covariance_frame, resolvable, resolve, unit_name};
 pub use uncertainty::fill;
 

@@ -56,8 +56,15 @@ fn bad(field: String, message: impl Into<String>) -> InputError {
     InputError::invalid("invalid_value", field, message)
 }
 
-fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>, InputError> {
-    let f = |x: &str| format!("{FIELD}[{i}].{x}");
+/// A supplied coefficient's numbers, entry `i` of the list at `list` (the
+/// option's, or a trim job's record of it: one rule for both): speed from 1
+/// rpm, amplitude 0 or in range, a finite angle, a valid covariance.
+pub(crate) fn check_entry(
+    list: &str,
+    i: usize,
+    c: &SuppliedCoefficient,
+) -> Result<Option<Matrix2<f64>>, InputError> {
+    let f = |x: &str| format!("{list}[{i}].{x}");
     // From 1 rpm, as a reading's (a coefficient at a slower speed pairs
     // with no reading).
     if !(c.speed_rpm.is_finite()
@@ -97,7 +104,7 @@ fn check_entry(i: usize, c: &SuppliedCoefficient) -> Result<Option<Matrix2<f64>>
 
 /// A coefficient's covariance (the option's, or a trim job's record of it):
 /// symmetric, positive semi-definite, finite and at most 1e30 (unit/g)².
-pub(crate) fn check_covariance(
+fn check_covariance(
     field: impl FnOnce() -> String,
     m: [[f64; 2]; 2],
 ) -> Result<Matrix2<f64>, InputError> {
@@ -152,7 +159,7 @@ pub fn resolve(checked: &Checked, options: &SolveOptions) -> Result<Option<Suppl
     let mut cov = vec![vec![Matrix2::zeros(); p]; n];
     let mut given = DMatrix::from_element(n, p, false);
     for (i, c) in list.iter().enumerate() {
-        let m = check_entry(i, c)?;
+        let m = check_entry(FIELD, i, c)?;
         let Some(s) = session.sensors.iter().position(|s| s.id == c.sensor) else {
             return Err(InputError::invalid(
                 "unknown_sensor",

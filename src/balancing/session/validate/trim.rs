@@ -2,10 +2,10 @@
 //! run's `purpose`: records for the client that reopens a job, stored and
 //! given back unchanged, so checked only for what would make them mean nothing.
 
-use super::fields::{at_least, check_angle, check_machine_id, check_positive, invalid};
-use super::{IdIndex, MAX_AMPLITUDE_PER_G, MIN_AMPLITUDE_PER_G};
+use super::fields::{check_machine_id, invalid};
+use super::IdIndex;
 use crate::balancing::error::InputError;
-use crate::balancing::job::supplied::{check_covariance, check_unit};
+use crate::balancing::job::supplied::{check_entry, check_unit};
 use crate::balancing::model::{Session, Trim};
 
 /// The trim's source, as it must be before a machine's coefficients are read
@@ -65,39 +65,9 @@ pub(super) fn check_trim(
                 // What the solve option refuses is not stored: a client
                 // sends these back as that option (session 21).
                 check_unit(|| f("unit"), c.unit, &c.sensor, session.sensors[s].unit)?;
-                check_positive(
-                    || f("speed_rpm"),
-                    c.speed_rpm,
-                    super::MAX_SPEED_RPM,
-                    false,
-                    "the speed",
-                )?;
-                // From 1 rpm, as a reading's: a coefficient at a slower
-                // speed pairs with no reading (1e-320 rpm was stored).
-                at_least(
-                    &f("speed_rpm"),
-                    c.speed_rpm,
-                    super::MIN_SERVICE_SPEED_RPM,
-                    "a coefficient's speed, as a reading's,",
-                    "rpm",
-                )?;
-                check_positive(
-                    || f("amplitude_per_g"),
-                    c.amplitude_per_g,
-                    MAX_AMPLITUDE_PER_G,
-                    true,
-                    "the coefficient",
-                )?;
-                if c.amplitude_per_g > 0.0 && c.amplitude_per_g < MIN_AMPLITUDE_PER_G {
-                    return Err(invalid(
-                        f("amplitude_per_g"),
-                        format!("a coefficient is 0 (the sensor does not see the plane) or from {MIN_AMPLITUDE_PER_G:e} unit/g, as the solve option's"),
-                    ));
-                }
-                check_angle(|| f("phase_deg"), c.phase_deg)?;
-                if let Some(m) = c.covariance {
-                    check_covariance(|| f("covariance"), m)?;
-                }
+                // Its numbers by the solve option's rule: a client sends
+                // these back as that option.
+                check_entry("trim.influence_coefficients", k, c)?;
             }
             Ok(())
         }

@@ -235,28 +235,12 @@ impl Fit {
         if g.len() != p || !b.iter().chain(g).all(|x| x.is_finite()) {
             return f64::INFINITY;
         }
-        let unscaled = b.clone();
-        let scale = lsq::unit_columns(&mut b);
-        let svd = b.svd(false, true);
-        let Some(vt) = svd.v_t else {
+        // h = H⁻¹ g, H = BᵀB from the SVD of B's scaled columns.
+        let Some(h) = lsq::gram_inverse_times(&b, &DVector::from_column_slice(g)) else {
             return f64::INFINITY;
         };
-        let smax = svd.singular_values.max();
-        if !(smax > 0.0 && svd.singular_values.min() > lsq::RANK_TOLERANCE * smax) {
-            return f64::INFINITY;
-        }
-        // h = H⁻¹ g = S⁻¹ V Σ⁻² Vᵀ S⁻¹ g.
-        let gs = DVector::from_iterator(p, (0..p).map(|j| g[j] / scale[j]));
-        let mut h = DVector::zeros(p);
-        for (k, &sk) in svd.singular_values.iter().enumerate() {
-            let proj = vt.row(k).transpose().dot(&gs) / (sk * sk);
-            h += vt.row(k).transpose() * proj;
-        }
-        for j in 0..p {
-            h[j] /= scale[j];
-        }
         // var ζ = Σ_k σ²|z_k|² w_k ‖√w_k J_k h‖² (the sandwich's middle, row by row).
-        let bh = unscaled * h;
+        let bh = &b * h;
         let var: f64 = noise
             .iter()
             .enumerate()

@@ -14,7 +14,7 @@ use crate::http::responses::{BodyRefused, MalformedJson};
         (status = 200, description = "The exact residual unbalance, the allowable, pass/fail and API's worksheet beside it", body = ResidualCheck),
         MalformedJson,
         BodyRefused,
-        (status = 422, description = "Invalid request (fewer than 4 positions, positions not equally spaced, a value out of range), naming the field", body = ErrorBody),
+        (status = 422, description = "Invalid request (fewer than 4 or more than 180 positions, positions not equally spaced, a value out of range), naming the field", body = ErrorBody),
     ))]
 pub async fn check(
     JsonBody(req): JsonBody<ResidualRequest>,

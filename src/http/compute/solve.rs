@@ -94,7 +94,7 @@ pub async fn solve(
         MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
         BodyRefused,
-        (status = 422, description = "Invalid options, or the session cannot be solved yet", body = ErrorBody),
+        (status = 422, description = "Invalid options (named without `options.`), or the session cannot be solved yet (named `session.…`; a trim job with no coefficient options is solved with its `trim`'s, a fault in them named `session.trim.…`)", body = ErrorBody),
         SolverBusy,
     ))]
 pub async fn create_solution(

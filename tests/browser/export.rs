@@ -112,15 +112,13 @@ async fn a_typed_session_exports_as_the_same_json_and_its_readings_and_results_a
     precise["name"] = serde_json::json!("precise trial");
     precise["runs"][1]["weights"][0] =
         serde_json::json!({"plane": "inboard", "mass_g": 12.345, "angle_deg": 123.45});
-    let created: Value = reqwest::Client::new()
-        .post(server.url("/api/v1/sessions"))
-        .json(&precise)
-        .send()
-        .await
-        .unwrap()
-        .json()
-        .await
-        .unwrap();
+    let (status, _, created) = common::post(
+        &reqwest::Client::new(),
+        &server.url("/api/v1/sessions"),
+        &precise,
+    )
+    .await;
+    assert_eq!(status, 201, "{created}");
     let id = created["id"].as_str().expect("stored");
     b.open_fresh(&server.url(&format!("/#session={id}&step=solve")))
         .await;

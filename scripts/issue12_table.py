@@ -42,7 +42,11 @@ one sensor selected.
 
 Not run by CI (NumPy is not a dependency). About 2 min for 400 realisations
 on a busy 2-core machine. Usage:
-  python3 scripts/issue12_table.py target/release/fieldbal [realisations] [table|samples|points]
+  python3 scripts/issue12_table.py target/release/fieldbal [realisations] [table|samples|points] [case numbers]
+
+The optional last argument runs only the cases numbered (0–19, in the order
+above, comma-separated: `8,9,10,16,17`), each with its own seed as in the
+whole table, so a subset reproduces those lines of a whole run.
 """
 import json
 import subprocess
@@ -213,8 +217,12 @@ def main():
     if what == "points":
         points(binary)
         return
+    only = ({int(n) for n in sys.argv[4].split(",")} if len(sys.argv) > 4
+            else set(range(len(CASES))))
     pool = ThreadPoolExecutor(2)
     for number, (name, speeds, effect) in enumerate(CASES):
+        if number not in only:
+            continue
         case(binary, number, name, speeds, effect, reps, pool, samples=what == "samples")
 
 

@@ -39,12 +39,14 @@ impl Idem {
     }
 }
 
-/// An answer kept for a key.
+/// An answer kept for a key: `body` is the JSON text first answered, kept
+/// as text so a retry gets the same document byte for byte (parsed into a
+/// `serde_json::Value` its keys came back sorted).
 #[derive(Debug, Clone)]
 pub struct Replay {
     pub status: u16,
     pub location: Option<String>,
-    pub body: serde_json::Value,
+    pub body: String,
 }
 
 /// The answer kept for `idem`'s key, if any; `KeyReused` if the key was
@@ -67,7 +69,7 @@ pub(crate) async fn find(
     Ok(Some(Replay {
         status: row.get::<i64, _>("status") as u16,
         location: row.get("location"),
-        body: serde_json::from_str(row.get("body"))?,
+        body: row.get("body"),
     }))
 }
 
@@ -97,7 +99,8 @@ pub struct Keep<'a> {
     pub idem: &'a Idem,
     pub status: u16,
     pub location: Option<String>,
-    pub body: serde_json::Value,
+    /// The answer's JSON text, as it is answered.
+    pub body: String,
 }
 
 impl Keep<'_> {
@@ -114,7 +117,7 @@ impl Keep<'_> {
         conn: &mut AnyConnection,
     ) -> Result<(), StoreError> {
         match keep {
-            Some(k) => remember(conn, Some(k.idem), k.status, k.location.as_deref(), &k.body).await,
+            Some(k) => remember_text(conn, k.idem, k.status, k.location.as_deref(), &k.body).await,
             None => Ok(()),
         }
     }
@@ -128,9 +131,22 @@ pub(crate) async fn remember(
     location: Option<&str>,
     body: &impl Serialize,
 ) -> Result<(), StoreError> {
-    let Some(idem) = idem else {
-        return Ok(());
-    };
+    match idem {
+        Some(idem) => {
+            remember_text(conn, idem, status, location, &serde_json::to_string(body)?).await
+        }
+        None => Ok(()),
+    }
+}
+
+/// [`remember`] with the answer's JSON text.
+async fn remember_text(
+    conn: &mut AnyConnection,
+    idem: &Idem,
+    status: u16,
+    location: Option<&str>,
+    body: &str,
+) -> Result<(), StoreError> {
     sqlx::query(
         "INSERT INTO idempotency (key, fingerprint, status, location, body) VALUES ($1, $2, $3, $4, $5)",
     )
@@ -138,7 +154,7 @@ pub(crate) async fn remember(
     .bind(&idem.fingerprint)
     .bind(i64::from(status))
     .bind(location)
-    .bind(serde_json::to_string(body)?)
+    .bind(body)
     .execute(&mut *conn)
     .await?;
     Ok(())

@@ -238,3 +238,39 @@ async fn versions_and_solutions_are_paged_within_bounds() {
     assert_eq!(status, 422, "{body}");
     assert_eq!(body["error"]["field"], "limit");
 }
+
+/// The text of a keyed POST's answer and whether it was a replay.
+async fn post_keyed_text(
+    client: &reqwest::Client,
+    url: &str,
+    key: &str,
+    body: &Value,
+) -> (u16, bool, String) {
+    let response = client
+        .post(url)
+        .header("Idempotency-Key", key)
+        .json(body)
+        .send()
+        .await
+        .unwrap();
+    let status = response.status().as_u16();
+    let replayed = response.headers().get("idempotent-replayed").is_some();
+    (status, replayed, response.text().await.unwrap())
+}
+
+#[tokio::test]
+async fn a_replayed_answer_is_the_first_answer_byte_for_byte() {
+    // The kept answer was parsed back into a JSON value, whose keys are
+    // sorted: a client comparing or hashing the retry's text saw another
+    // document (a stored solution's `id` after its `correction`, say).
+    let (_dir, server, client) = fresh_server().await;
+    let id = store(&client, &server, &two_plane()).await;
+    let url = server.url(&format!("/api/v1/sessions/{id}/solutions"));
+    let (s1, r1, first) = post_keyed_text(&client, &url, "text-key", &json!({})).await;
+    let (s2, r2, again) = post_keyed_text(&client, &url, "text-key", &json!({})).await;
+    assert_eq!((s1, r1, s2, r2), (201, false, 201, true));
+    assert_eq!(
+        first, again,
+        "the replay's text differs from the first answer's"
+    );
+}

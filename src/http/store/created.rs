@@ -20,14 +20,18 @@ pub struct CreatedAnswer<B> {
 }
 
 impl<B: Serialize> CreatedAnswer<B> {
-    /// This answer, to keep with the request's key (nothing without a key).
-    pub fn keep<'a>(&self, idem: Option<&'a Idem>) -> Option<Keep<'a>> {
-        idem.map(|idem| Keep {
+    /// This answer, to keep with the request's key (nothing without a key),
+    /// its body as the text [`Self::answer`] sends.
+    pub fn keep<'a>(&self, idem: Option<&'a Idem>) -> Result<Option<Keep<'a>>, StoreError> {
+        let Some(idem) = idem else {
+            return Ok(None);
+        };
+        Ok(Some(Keep {
             idem,
             status: 201,
             location: Some(self.location.clone()),
-            body: serde_json::json!(&self.body),
-        })
+            body: serde_json::to_string(&self.body)?,
+        }))
     }
 
     /// The answer once `written`: 201 with `Location`, the headers of `parts`

@@ -114,7 +114,7 @@ pub async fn append(
             version: 1,
         },
     };
-    let keep = created.keep(idem.as_ref());
+    let keep = created.keep(idem.as_ref())?;
     let written = db::runs::append(&state.db, &id, &run, check_with_run, keep.as_ref()).await;
     created.answer(written, [(header::ETAG, headers::run_etag(1))])
 }

@@ -120,7 +120,7 @@ pub async fn create(
         location: format!("/api/v1/sessions/{id}"),
         body: Created { id },
     };
-    let keep = created.keep(idem.as_ref());
+    let keep = created.keep(idem.as_ref())?;
     let written = db::sessions::create(&state.db, &created.body.id, &session, keep.as_ref()).await;
     created.answer(written, ())
 }

@@ -83,6 +83,8 @@ pub async fn connect_pool(
     sqlx::any::install_default_drivers();
     match Engine::of_url(url) {
         Engine::Sqlite => {
+            let url = sqlite_url(url)?;
+            first_connection(&url, true).await?;
             let pool = AnyPoolOptions::new()
                 .max_connections(connections.unwrap_or(SQLITE_CONNECTIONS))
                 .after_connect(move |conn, _| {
@@ -94,16 +96,17 @@ pub async fn connect_pool(
                         }
                     })
                 })
-                .connect(&sqlite_url(url)?)
+                .connect(&url)
                 .await?;
             sqlx::migrate!().run(&pool).await?;
             Ok(pool)
         }
         Engine::Postgres => {
+            first_connection(url, false).await?;
             let pool = AnyPoolOptions::new()
                 .max_connections(connections.unwrap_or(POSTGRES_CONNECTIONS))
                 // A database that is down answers 503 within this, not after sqlx's 30 s.
-                .acquire_timeout(Duration::from_secs(10))
+                .acquire_timeout(FIRST_CONNECTION)
                 .after_connect(move |conn, _| {
                     Box::pin(async move {
                         match setup {
@@ -120,6 +123,38 @@ pub async fn connect_pool(
             Ok(pool)
         }
     }
+}
+
+/// How long the first connection at start may take (a PostgreSQL host that
+/// does not answer), the pool's own acquire time.
+const FIRST_CONNECTION: Duration = Duration::from_secs(10);
+
+/// Open one connection to `url` outside any pool (with the SQLite settings when
+/// `sqlite`) and close it, so that start-up fails at once with the real cause.
+/// A pool retries a connection whose set-up fails until its acquire time is up
+/// and then says only "pool timed out": an SQLite file in a directory the
+/// service may not write failed its `journal_mode = WAL` for 30 s that way,
+/// and a refused PostgreSQL connection for 10 s.
+async fn first_connection(url: &str, sqlite: bool) -> Result<(), sqlx::Error> {
+    use sqlx::Connection;
+    let open = async {
+        let mut conn = AnyConnection::connect(url).await?;
+        if sqlite {
+            sqlite_settings(&mut conn).await?;
+        }
+        conn.close().await
+    };
+    tokio::time::timeout(FIRST_CONNECTION, open)
+        .await
+        .unwrap_or_else(|_| {
+            Err(sqlx::Error::Io(std::io::Error::new(
+                std::io::ErrorKind::TimedOut,
+                format!(
+                    "no connection within {} s (is the database server up and reachable?)",
+                    FIRST_CONNECTION.as_secs()
+                ),
+            )))
+        })
 }
 
 /// The SQLite URL for `url`: a plain path becomes an absolute, percent-encoded

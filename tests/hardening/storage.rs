@@ -123,3 +123,59 @@ async fn serve_refuses_to_start_on_a_read_only_database() {
     let log = String::from_utf8_lossy(&out.stderr);
     assert!(log.contains("read-only"), "{log}");
 }
+
+/// A database the service cannot switch to WAL (here an SQLite file in the
+/// default rollback-journal mode opened read-only; in the field, a new file in
+/// a directory the service may not write, where SQLite answers
+/// SQLITE_READONLY_DIRECTORY) must be refused at once with the read-only
+/// message. It used to fail each new connection's set-up, which the pool
+/// retried for its 30 s acquire time, and then say only "pool timed out while
+/// waiting for an open connection".
+#[tokio::test]
+async fn serve_names_a_database_it_cannot_set_up_as_read_only() {
+    use sqlx::Connection;
+    sqlx::any::install_default_drivers();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("journal.db");
+    let mut conn = sqlx::AnyConnection::connect(&format!("sqlite://{}?mode=rwc", path.display()))
+        .await
+        .unwrap();
+    sqlx::query("CREATE TABLE t (x INTEGER)")
+        .execute(&mut conn)
+        .await
+        .unwrap();
+    conn.close().await.unwrap();
+    let url = format!("sqlite://{}?mode=ro", path.display());
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "127.0.0.1:0", "--database", &url])
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let log = String::from_utf8_lossy(&out.stderr);
+    assert!(log.contains("is read-only"), "{log}");
+    assert!(!log.contains("timed out"), "{log}");
+}
+
+/// A PostgreSQL server that refuses the connection is named as such at
+/// start, not hidden behind the pool's "timed out" ten seconds later.
+#[tokio::test]
+async fn serve_says_why_it_cannot_reach_postgres() {
+    // Port 1 on loopback: nothing listens there, the connection is refused.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args([
+            "serve",
+            "--listen",
+            "127.0.0.1:0",
+            "--database",
+            "postgres://fieldbal:secret@127.0.0.1:1/fieldbal",
+        ])
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let log = String::from_utf8_lossy(&out.stderr);
+    assert!(log.contains("refused"), "{log}");
+    assert!(!log.contains("timed out"), "{log}");
+    assert!(!log.contains("secret"), "the password is not logged: {log}");
+}

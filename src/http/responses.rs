@@ -56,3 +56,11 @@ pub enum PageRefused {
     description = "Every solver busy: retry after `Retry-After` seconds"
 )]
 pub struct SolverBusy(pub ErrorBody);
+
+/// A write that met a full disk (`StoreError::Storage`, `db::health::is_full`).
+#[derive(IntoResponses)]
+#[response(
+    status = 507,
+    description = "The disk holding the database is full (`storage_full`); nothing was stored"
+)]
+pub struct StorageFull(pub ErrorBody);

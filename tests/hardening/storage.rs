@@ -179,3 +179,111 @@ async fn serve_says_why_it_cannot_reach_postgres() {
     assert!(!log.contains("timed out"), "{log}");
     assert!(!log.contains("secret"), "the password is not logged: {log}");
 }
+
+/// Every write answers 507 `storage_full` on a full disk, so the served
+/// OpenAPI document must declare it for each of them (it did for storing a
+/// session only): a client generated from the document would otherwise meet
+/// an undeclared status on the run it appends or the solution it stores.
+#[tokio::test]
+async fn every_write_declares_the_full_disk_answer_it_gives() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("full-writes.db");
+    let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
+        .await
+        .unwrap();
+    let state = AppState::new(pool.clone());
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    let server = tokio::spawn(http::serve(listener, state, async {
+        let _ = stopped.await;
+    }));
+    let client = reqwest::Client::new();
+    let url = |p: &str| format!("http://{addr}{p}");
+    let (status, _, doc) = send(client.get(url("/api/v1/openapi.json"))).await;
+    assert_eq!(status, 200);
+    let mut session: Value = example("compressor-multispeed-noisy.json")["session"].clone();
+    session["machine"] = "M-FULL".into();
+    let (status, _, body) = post(
+        &client,
+        &url("/api/v1/machines"),
+        &serde_json::json!({"id": "M-FULL"}),
+    )
+    .await;
+    assert_eq!(status, 201, "{body}");
+    let (status, _, stored) = post(&client, &url("/api/v1/sessions"), &session).await;
+    assert_eq!(status, 201, "{stored}");
+    let id = stored["id"].as_str().unwrap().to_string();
+
+    set_max_pages(&pool, page_count(&pool).await + 2).await;
+    let mut full = false;
+    for _ in 0..200 {
+        let (status, _, _) = post(&client, &url("/api/v1/sessions"), &session).await;
+        if status == 507 {
+            full = true;
+            break;
+        }
+    }
+    assert!(full, "the page limit is reached within 200 sessions");
+
+    let mut run = session["runs"][1].clone();
+    run["id"] = "t1-again".into();
+    let writes: Vec<(&str, &str, String, Value)> = vec![
+        (
+            "post",
+            "/api/v1/sessions/{id}/runs",
+            format!("/api/v1/sessions/{id}/runs"),
+            run,
+        ),
+        (
+            "put",
+            "/api/v1/sessions/{id}/runs/{run_id}",
+            format!("/api/v1/sessions/{id}/runs/t1"),
+            session["runs"][1].clone(),
+        ),
+        (
+            "post",
+            "/api/v1/sessions/{id}/solutions",
+            format!("/api/v1/sessions/{id}/solutions"),
+            serde_json::json!({}),
+        ),
+        (
+            "post",
+            "/api/v1/machines",
+            "/api/v1/machines".into(),
+            serde_json::json!({"id": "M-NEW"}),
+        ),
+        (
+            "post",
+            "/api/v1/machines/{id}/coefficients",
+            "/api/v1/machines/M-FULL/coefficients".into(),
+            serde_json::json!({"sessions": [id]}),
+        ),
+    ];
+    let mut refused = 0;
+    let mut undeclared = Vec::new();
+    for (method, template, path, body) in writes {
+        let req = match method {
+            "post" => client.post(url(&path)),
+            _ => client.put(url(&path)),
+        };
+        let (status, _, answer) = send(req.json(&body)).await;
+        let declared = &doc["paths"][template][method]["responses"];
+        if declared.get(status.to_string()).is_none() {
+            undeclared.push(format!(
+                "{} {template} {status} {answer}",
+                method.to_uppercase()
+            ));
+        }
+        if status == 507 {
+            refused += 1;
+        }
+    }
+    assert!(
+        undeclared.is_empty(),
+        "answers the OpenAPI document does not declare: {undeclared:#?}"
+    );
+    assert!(refused > 0, "the full disk refused none of the writes");
+    let _ = stop.send(());
+    server.await.unwrap().unwrap();
+}

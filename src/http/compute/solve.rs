@@ -13,7 +13,7 @@ use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::{JsonBody, OptionsBody};
 use crate::http::headers::{self, Page};
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, SolverBusy};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, SolverBusy, StorageFull};
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -96,6 +96,7 @@ pub async fn solve(
         BodyRefused,
         (status = 422, description = "Invalid options (named without `options.`), or the session cannot be solved yet (named `session.…`; a trim job with no coefficient options is solved with its `trim`'s, a fault in them named `session.trim.…`)", body = ErrorBody),
         SolverBusy,
+        StorageFull,
     ))]
 pub async fn create_solution(
     State(state): State<AppState>,

@@ -20,7 +20,7 @@ use crate::db::{idempotency, StoreError};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, invalid_query};
-use crate::http::responses::{MalformedJson, PageRefused, SolverBusy};
+use crate::http::responses::{MalformedJson, PageRefused, SolverBusy, StorageFull};
 use crate::http::runs::encode_segment;
 use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
@@ -72,6 +72,7 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
         MalformedJson,
         (status = 409, description = "A machine with this id exists", body = ErrorBody),
         (status = 422, description = "Invalid machine, or an Idempotency-Key used for another request", body = ErrorBody),
+        StorageFull,
     ),
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")))]
 pub async fn create(
@@ -156,6 +157,7 @@ pub async fn get(
     responses(
         (status = 204, description = "Deleted with its coefficient versions; its sessions stay"),
         (status = 404, description = "No such machine", body = ErrorBody),
+        StorageFull,
     ))]
 pub async fn delete(
     State(state): State<AppState>,
@@ -185,6 +187,7 @@ pub struct PoolRequest {
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
         SolverBusy,
+        StorageFull,
     ),
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores no new version")))]
 pub async fn pool_coefficients(

@@ -16,7 +16,7 @@ use crate::db::{self, RunVersion};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, Page};
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull};
 use crate::http::sessions::validate_stored;
 use crate::http::store::created::CreatedAnswer;
 use crate::http::AppState;
@@ -89,6 +89,7 @@ pub(crate) fn encode_segment(s: &str) -> String {
         (status = 409, description = "The session already has a run with this id", body = ErrorBody),
         BodyRefused,
         (status = 422, description = "The session with this run is invalid", body = ErrorBody),
+        StorageFull,
     ))]
 pub async fn append(
     State(state): State<AppState>,
@@ -131,6 +132,7 @@ pub async fn append(
         BodyRefused,
         (status = 412, description = "If-Match names a version that is no longer the run's current one", body = ErrorBody),
         (status = 422, description = "Invalid, or the body's id differs from the path's", body = ErrorBody),
+        StorageFull,
     ))]
 pub async fn replace(
     State(state): State<AppState>,

@@ -16,7 +16,7 @@ use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers;
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused};
+use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull};
 use crate::http::store::created::CreatedAnswer;
 use crate::http::work::check_blocking;
 use crate::http::AppState;
@@ -166,6 +166,7 @@ pub async fn get(
         (status = 400, description = "An If-Match that is neither `*` nor a list of quoted entity-tags (`invalid_header`, naming `If-Match`)", body = ErrorBody),
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 412, description = "The session changed since its ETag was read (or `If-Match` names no ETag of it): nothing deleted", body = ErrorBody),
+        StorageFull,
     ))]
 pub async fn delete(
     State(state): State<AppState>,

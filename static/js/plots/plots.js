@@ -41,6 +41,19 @@ function bounded(x, bound, digits) {
 }
 
 /**
+ * A fitted figure with its 95 % half-width `hw` (the identify answer's
+ * `*_resolution*`), both to the half-width's second significant digit:
+ * "2452 ± 23", "0.0512 ± 0.0087". The figures were shown bare, to `digits`
+ * decimals, as if known to the last digit. A half-width below what `digits`
+ * shows (exact readings) leaves the figure as it was.
+ */
+function withHalfWidth(x, hw, digits) {
+  if (!Number.isFinite(x) || !Number.isFinite(hw) || hw < 0.5 * 10 ** -digits) return fmt(x, digits);
+  const d = Math.max(0, 1 - Math.floor(Math.log10(hw)));
+  return `${x.toFixed(d)} ± ${hw.toFixed(d)}`;
+}
+
+/**
  * The identify answer's warnings that concern one result: the service names
  * the plane (`plane`) and starts its message with "sensor 'S', plane 'P':".
  */
@@ -79,8 +92,8 @@ function identification(sol) {
         h("thead", {}, h("tr", {}, h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Critical speed, rpm"), h("th", {}, "Damping ratio"), h("th", {}, "Amplification"), h("th", {}, "Margin to service speed"))),
         h("tbody", {}, results.map((r) => [h("tr", { class: outside(r) ? "ident-result outside" : "ident-result", dataset: { sensor: r.sensor, plane: r.plane } },
           h("td", {}, r.sensor), h("td", {}, r.plane),
-          h("td", { class: "critical" }, fmt(r.critical_speed_rpm, 0), outside(r) ? h("span", { class: "outside-note" }, ` outside the ${range} measured: extrapolated`) : ""),
-          h("td", { class: r.damping_ratio_bound ? "damping bound" : "damping" }, bounded(r.damping_ratio, r.damping_ratio_bound, 3)),
+          h("td", { class: "critical" }, withHalfWidth(r.critical_speed_rpm, r.critical_speed_resolution_rpm, 0), outside(r) ? h("span", { class: "outside-note" }, ` outside the ${range} measured: extrapolated`) : ""),
+          h("td", { class: r.damping_ratio_bound ? "damping bound" : "damping" }, r.damping_ratio_bound ? bounded(r.damping_ratio, r.damping_ratio_bound, 3) : withHalfWidth(r.damping_ratio, r.damping_ratio_resolution, 3)),
           h("td", { class: r.amplification_factor_bound ? "amplification bound" : "amplification" }, bounded(r.amplification_factor, r.amplification_factor_bound, 1)),
           h("td", {}, r.separation_margin_pct === undefined || r.separation_margin_pct === null ? "no service speed in this job's rotor data"
             : `${fmt(r.separation_margin_pct, 0)} %${r.required_margin_pct !== undefined && r.required_margin_pct !== null ? ` (API 684 asks ${fmt(r.required_margin_pct, 0)} %)` : ""}`)),

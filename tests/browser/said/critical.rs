@@ -146,3 +146,62 @@ async fn a_corrected_run_is_identified_again(
         "the corrected job's critical, as the service finds it"
     );
 }
+
+/// A critical speed and damping ratio read from noisy readings: the service
+/// gives each with its 95 % half-width (`critical_speed_resolution_rpm`,
+/// `damping_ratio_resolution`), as the free-decay page shows its figures. The
+/// identification table showed the bare numbers ("2450", "0.050"), as if
+/// known to the last digit; each now carries its "± half-width".
+pub async fn a_critical_speed_is_shown_with_its_half_width(stand: &Stand) {
+    let b = &stand.browser;
+    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, 0.05);
+    let speeds = jeffcott::speeds(1800.0, 3200.0, 8);
+    let session =
+        serde_json::to_value(jeffcott::session(&[rotor], &speeds, Unit::UmPp, 0.02, 7)).unwrap();
+    let said = post(
+        stand,
+        "/api/v1/identify/rotor",
+        serde_json::json!({ "session": session }),
+    )
+    .await;
+    let r = &said["results"][0];
+    let critical = r["critical_speed_rpm"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("a result: {said}"));
+    let critical_hw = r["critical_speed_resolution_rpm"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("a half-width: {said}"));
+    assert!(
+        critical_hw >= 1.0,
+        "resolved to a whole rpm or worse: {said}"
+    );
+    assert!(
+        r.get("damping_ratio_bound").is_none(),
+        "a resolved damping: {said}"
+    );
+    let zeta = r["damping_ratio"].as_f64().unwrap();
+    let zeta_hw = r["damping_ratio_resolution"].as_f64().unwrap();
+    assert!(zeta_hw >= 0.001, "{said}");
+
+    let created = post(stand, "/api/v1/sessions", session.clone()).await;
+    let id = created["id"].as_str().expect("stored");
+    open_at_solve(stand, id).await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .identification td.critical").await;
+    let cells: Value = js(
+        b,
+        "const r = document.querySelector('#step-solve .identification tr.ident-result'); return [r.querySelector('td.critical').textContent, r.querySelector('td.damping').textContent]",
+    )
+    .await;
+    // Both to the half-width's second significant digit.
+    let shown = |x: f64, hw: f64| {
+        let d = (1.0 - hw.log10().floor()).max(0.0) as usize;
+        format!("{x:.d$} ± {hw:.d$}")
+    };
+    assert_eq!(
+        cells[0],
+        Value::from(shown(critical, critical_hw)),
+        "{said}"
+    );
+    assert_eq!(cells[1], Value::from(shown(zeta, zeta_hw)), "{said}");
+}

@@ -1,6 +1,7 @@
 //! What the form says matches what the service means: a damping the readings
 //! cannot resolve is shown as the bound it is, with the service's warning
-//! (`damping`), a critical outside the speeds measured as extrapolated
+//! (`damping`), a critical outside the speeds measured as extrapolated,
+//! and each critical and damping ratio with its 95 % half-width
 //! (`critical`), a solution's date in the one format of every other stored
 //! time (`dates`), and a trim job's set-up says it is one and with which
 //! coefficients, its run checks what they predict from, its results CSV
@@ -47,6 +48,8 @@ async fn the_form_says_what_the_service_means() {
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
     stand.renew().await;
     critical::a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(&stand).await;
+    stand.renew().await;
+    critical::a_critical_speed_is_shown_with_its_half_width(&stand).await;
     stand.renew().await;
     dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
     stand.renew().await;

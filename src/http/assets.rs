@@ -52,6 +52,7 @@ static ASSETS: &[Asset] = &[
     asset!("js/steps/options.js", JS),
     asset!("js/steps/picture.js", JS),
     asset!("js/steps/report.js", JS),
+    asset!("js/steps/residual.js", JS),
     asset!("js/steps/runs.js", JS),
     asset!("js/steps/sessions.js", JS),
     asset!("js/steps/setup.js", JS),

@@ -23,8 +23,9 @@ import { renderReport } from "./steps/report.js";
 import { renderSessions } from "./steps/sessions.js";
 import { renderMachines } from "./steps/machines.js";
 import { renderDecay } from "./steps/decay.js";
+import { renderResidual } from "./steps/residual.js";
 
-const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines", "decay"];
+const STEPS = ["setup", "runs", "solve", "report", "sessions", "machines", "decay", "residual"];
 let current = "setup";
 
 /** The address of a step of the job shown now. */
@@ -68,6 +69,7 @@ function show(step, push = true) {
   if (step === "solve") renderSolve(root, (weights, fromRun) => { newDraft("check", weights, fromRun); show("runs"); });
   if (step === "sessions") renderSessions(root, (id) => mayLeave(id) && open(id), open);
   if (step === "decay") renderDecay(root);
+  if (step === "residual") renderResidual(root);
   if (step === "machines") renderMachines(root, { openSession: (id) => mayLeave(id) && open(id), newJob: (setup, from) => mayLeave(null) && startJob(setup, from), showMachine });
   // The report is kept current so that printing from any step prints it.
   renderReport($("#step-report"));

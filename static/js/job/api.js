@@ -78,6 +78,7 @@ export const api = {
   trialWeights: (session, options) => call("POST", "/trial-weights", { session, options: options || {} }),
   identifyRotor: (session, options) => call("POST", "/identify/rotor", { session, options: options || {} }),
   identifyFreeDecay: (body) => call("POST", "/identify/free-decay", body),
+  residualUnbalance: (body) => call("POST", "/residual-unbalance", body),
   listMachines: (limit = 100, offset = 0) => call("GET", `/machines?limit=${limit}&offset=${offset}`),
   getMachine: (id) => call("GET", `/machines/${encodeURIComponent(id)}`),
   createMachine: (machine) => call("POST", "/machines", machine),

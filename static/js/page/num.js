@@ -29,6 +29,8 @@ export const RULES = {
   radius: { test: (x) => x > 0 && x < 1e5, message: (x) => (x <= 0 ? "radius in mm, more than 0" : "radius in mm, less than 100000") },
   // The rotor's mass is in kilograms (the service takes up to 10^7 kg); it
   // was checked by the radius rule and refused as "radius in mm".
+  // API's W, the static load on the journal nearest the plane.
+  load: { test: (x) => x > 0 && x < 1e7, message: (x) => (x <= 0 ? "journal load in kg, more than 0" : "journal load in kg, less than 10000000") },
   rotor_mass: { test: (x) => x > 0 && x < 1e7, message: (x) => (x <= 0 ? "rotor mass in kg, more than 0" : "rotor mass in kg, less than 10000000") },
   positions: {
     test: (x) => Number.isInteger(x) && x >= 2 && x <= 360,

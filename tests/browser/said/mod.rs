@@ -15,7 +15,8 @@
 //! plane makes up for is not called costly (`bound`); a store whose answer
 //! was lost is not taken for another tab's, nor stored twice (`retry`); what
 //! a technician read walking a job through the form (`walk`); a free decay
-//! pasted on its page is answered as the service answers it (`decay`).
+//! pasted on its page is answered as the service answers it (`decay`), and
+//! so is a residual-unbalance check (`residual`).
 
 mod bound;
 mod conventions;
@@ -24,6 +25,7 @@ mod damping;
 mod dates;
 mod decay;
 mod pooled;
+mod residual;
 mod retry;
 mod samples;
 mod trim;
@@ -44,6 +46,8 @@ use crate::harness::stand::Stand;
 async fn the_form_says_what_the_service_means() {
     let mut stand = Stand::start().await;
     decay::a_pasted_free_decay_is_answered_as_the_service_says(&stand).await;
+    stand.renew().await;
+    residual::a_residual_check_is_answered_as_the_service_says(&stand).await;
     stand.renew().await;
     damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
     stand.renew().await;

@@ -52,6 +52,24 @@ pub fn redacted(url: &str) -> String {
     }
 }
 
+/// The file an SQLite `url` (`sqlite://fieldbal.db`, `sqlite:///var/…`, a plain
+/// path) opens, made absolute against the working directory; `None` for
+/// PostgreSQL and in-memory databases. Said at start, since a relative
+/// default lands in whatever directory the service was started from.
+pub fn sqlite_file(url: &str) -> Option<std::path::PathBuf> {
+    if Engine::of_url(url) != Engine::Sqlite || url.contains(":memory:") {
+        return None;
+    }
+    let path = match url
+        .strip_prefix("sqlite://")
+        .or_else(|| url.strip_prefix("sqlite:"))
+    {
+        Some(rest) => rest.split('?').next().unwrap_or(rest),
+        None => url,
+    };
+    std::path::absolute(Path::new(path)).ok()
+}
+
 /// How long an SQLite connection waits for another process's writer.
 const BUSY_TIMEOUT_MS: u64 = 10_000;
 /// Connections per process. SQLite has one writer anyway; a PostgreSQL

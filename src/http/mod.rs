@@ -412,7 +412,10 @@ pub fn serve_main(args: ServeArgs) -> ExitCode {
 
 /// The start-up error for a database that cannot be opened or written.
 fn cannot_write(database: &str, e: &sqlx::Error) -> String {
-    let database = crate::db::engine::redacted(database);
+    let database = match crate::db::engine::sqlite_file(database) {
+        Some(file) => format!("{database} ({})", file.display()),
+        None => crate::db::engine::redacted(database),
+    };
     let text = e.to_string();
     if text.contains("readonly") || text.contains("read-only") {
         format!("database {database} is read-only ({text}): fieldbal needs to write the file and its directory (for the -wal and -shm files); fix the permissions or the mount, or point --database elsewhere")
@@ -443,7 +446,14 @@ async fn run(args: ServeArgs) -> Result<(), String> {
         .await
         .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
-    tracing::info!(%addr, database = %crate::db::engine::redacted(&args.database), "fieldbal serve listening");
+    match crate::db::engine::sqlite_file(&args.database) {
+        Some(file) => {
+            tracing::info!(%addr, database = %args.database, file = %file.display(), "fieldbal serve listening")
+        }
+        None => {
+            tracing::info!(%addr, database = %crate::db::engine::redacted(&args.database), "fieldbal serve listening")
+        }
+    }
     let l = &args.limits;
     Limits::configure(l.session.limits());
     let state = AppState::new(pool.clone())

@@ -287,3 +287,42 @@ async fn every_write_declares_the_full_disk_answer_it_gives() {
     let _ = stop.send(());
     server.await.unwrap().unwrap();
 }
+
+/// Started with the default database (`sqlite://fieldbal.db`, relative), the
+/// service says which file that is: a service started from another directory
+/// opens another, empty store, and the log said only `sqlite://fieldbal.db`.
+#[test]
+fn serve_names_the_database_file_it_opened() {
+    use std::io::BufRead;
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "127.0.0.1:0"])
+        .current_dir(dir.path())
+        .env_remove("DATABASE_URL")
+        .env_remove("FIELDBAL_TOKENS")
+        .env("NO_COLOR", "1")
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let lines = std::io::BufReader::new(child.stderr.take().unwrap()).lines();
+    let mut listening = None;
+    for line in lines {
+        let line = line.unwrap();
+        if line.contains("listening") {
+            listening = Some(line);
+            break;
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    let line = listening.expect("the service says it listens");
+    let file = std::fs::canonicalize(dir.path())
+        .unwrap()
+        .join("fieldbal.db");
+    assert!(
+        line.contains(&format!("file={}", file.display())),
+        "{line} (the file is {})",
+        file.display()
+    );
+}

@@ -159,6 +159,10 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     // degrees of freedom (`dof`, method 8.5).
     let prior = noise_options(options).map_or(true, |n| n.amplitude_pct > 0.0 || n.phase_deg > 0.0);
     let dofs = super::dof::degrees_of_freedom(fit, cov, prior);
+    // The coefficients' energies with their noise known (hidden.rs): for the
+    // regions of planes that pass `trial_effect_small` (trust.rs) and for
+    // `regions_unreliable`.
+    let denoised = super::hidden::denoised(fit, options, &prop, cov);
     for (col, (((((corr, &c), cc), &lost), &k), &nu)) in solution
         .corrections
         .iter_mut()
@@ -176,7 +180,8 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
         // correction `c` (the minimiser) errs by its bias as well as its
         // scatter: the region around `c` is its mean square error (8.11).
         if let Some(region) = &biased {
-            widened = region.plane(col, &widened);
+            let stretch = super::trust::selection_stretch(k, col, &prop, denoised.as_ref());
+            widened = region.plane(col, &widened, stretch);
         }
         let unbiased = c_star.map(|cu| cu[col]);
         let mut u = correction_uncertainty(c, &widened, conv);
@@ -233,7 +238,7 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     // Nearly alike planes or a small trial beside the others: every plane's
     // region may be off (issue 12), also where only the coefficients' noise
     // makes the planes look told apart.
-    let shares = super::hidden::denoised_shares(fit, options, &prop, cov);
+    let shares = denoised.as_ref().map(|d| d.shares());
     super::hidden::warn_regions_unreliable(fit, shares.as_deref(), solution);
 
     let min_max = options.objective == Some(Objective::MinMax);

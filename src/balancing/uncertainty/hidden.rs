@@ -78,6 +78,7 @@
 //!   ten speeds never, as before.
 
 use nalgebra::Matrix2;
+use num_complex::Complex64;
 
 use super::propagate::RANK_TOLERANCE;
 use super::Propagation;
@@ -86,17 +87,56 @@ use crate::balancing::model::SolveOptions;
 use crate::balancing::solution::{Solution, Warning};
 use crate::balancing::solve::Fit;
 
-/// Per plane of `fit.planes`: the share of its effect that is its own, with
-/// its coefficients' noise taken out (`s̃_j`, module doc), or `None` where
-/// the noise is not known (the default model only), the coefficients were
-/// supplied, or the fit has no more rows than planes or is rank deficient.
-/// `0.0` where the noise is as large as the plane's own part.
-pub fn denoised_shares(
+/// Per plane of `fit.planes`, the energies of its weighted influence column
+/// `â_j` with its coefficients' noise known (module doc): what
+/// [`Denoised::shares`] and `trust`'s de-noised `κ̃_j` are formed from.
+#[derive(Debug, Clone)]
+pub struct Denoised {
+    /// `M_jj`, the noise energy of the column.
+    pub noise: Vec<f64>,
+    /// `‖(I − P_o) â_j‖² − N⊥_j`: the plane's own signal energy (the part the
+    /// other columns do not span), its noise taken out; may be `≤ 0`.
+    pub own: Vec<f64>,
+    /// `‖â_j‖² − M_jj`: the column's whole signal energy; may be `≤ 0`.
+    pub whole: Vec<f64>,
+    /// The standard deviation of `‖(I − P_o) â_j‖²` from the noise, to first
+    /// order in the signal and second in the noise: `√(2 Σ_a |a⊥_a|² u_a +
+    /// Σ_a v_a² (1 − h_a⁽⁻ʲ⁾)²)`, `a⊥` the column's part outside the others'
+    /// span, `v_a = E|dA_aj|²` and `u_a = E|Σ_l β_l dA_al|²`, `β_l =
+    /// [(AᴴA)⁻¹]_lj / [(AᴴA)⁻¹]_jj`: the first-order change of the own energy
+    /// is `2 Re(a⊥ᴴ Σ_l β_l dA_l)`, the other columns' noise turning their
+    /// span (`β_j = 1`), with the reference reading shared by every column.
+    pub own_sd: Vec<f64>,
+}
+
+impl Denoised {
+    /// The share of each plane's effect that is its own, `s̃_j` (module
+    /// doc); `0.0` where the noise is as large as the plane's own part.
+    pub fn shares(&self) -> Vec<f64> {
+        self.own
+            .iter()
+            .zip(&self.whole)
+            .map(|(&own, &whole)| {
+                let share2 = own / whole;
+                if own > 0.0 && whole > 0.0 && share2.is_finite() {
+                    share2.min(1.0).sqrt()
+                } else {
+                    0.0
+                }
+            })
+            .collect()
+    }
+}
+
+/// [`Denoised`] per plane of `fit.planes`, or `None` where the noise is not
+/// known (the default model only), the coefficients were supplied, or the
+/// fit has no more rows than planes or is rank deficient.
+pub fn denoised(
     fit: &Fit,
     options: &SolveOptions,
     prop: &Propagation,
     cov: &[Vec<Matrix2<f64>>],
-) -> Option<Vec<f64>> {
+) -> Option<Denoised> {
     fit.t_pinv.as_ref()?;
     let sel = &fit.selection;
     if !super::bias::noise_known(&fit.checked, &sel.rows, options) {
@@ -109,12 +149,13 @@ pub fn denoised_shares(
         return None;
     }
     let gram_inv = prop.gram_inv_diag.as_ref()?;
-    let (a_pinv, _) = fit
+    let (a_pinv, gram) = fit
         .factor
         .pinv_and_gram_inv(RANK_TOLERANCE * fit.factor.max());
     let mut signal = vec![0.0; q]; // ‖a_j‖²
     let mut noise = vec![0.0; q]; // M_jj
     let mut noise_off = vec![0.0; q]; // N⊥_j
+    let mut own_var = vec![0.0; q]; // Var ‖(I − P_o)â_j‖²
     for (i, (&row, &g)) in sel.rows.iter().zip(&sel.weights).enumerate() {
         let a = |j: usize| fit.w[(row, fit.planes[j])] * g;
         // The row's leverage in the span of all the columns, `[A A⁺]_ii`.
@@ -129,31 +170,38 @@ pub fn denoised_shares(
             // Leverage in the span of the other columns: `h_i` less column
             // j's own residual direction, `|A⁺_ji|² / [(AᴴA)⁻¹]_jj`.
             let others = lev - a_pinv[(j, i)].norm_sqr() / gram_inv[j];
+            let off = (1.0 - others).clamp(0.0, 1.0);
             signal[j] += a(j).norm_sqr();
             noise[j] += var;
-            noise_off[j] += var * (1.0 - others).clamp(0.0, 1.0);
+            noise_off[j] += var * off;
+            // `a⊥_i = conj(A⁺_ji) / [(AᴴA)⁻¹]_jj`; its noise with the others'.
+            let perp2 = a_pinv[(j, i)].norm_sqr() / (gram_inv[j] * gram_inv[j]);
+            let turned: f64 = g
+                * g
+                * (0..runs)
+                    .map(|k| {
+                        let w: Complex64 = (0..q)
+                            .map(|l| gram[(l, j)] * prop.omega[(k, l)])
+                            .sum::<Complex64>()
+                            / gram_inv[j];
+                        cov[row][k].trace() * w.norm_sqr()
+                    })
+                    .sum::<f64>();
+            own_var[j] += 2.0 * perp2 * turned + (var * off).powi(2);
         }
     }
-    Some(
-        (0..q)
-            .map(|j| {
-                // ‖(I − P)â_j‖² = 1 / [(ÂᴴÂ)⁻¹]_jj, less its noise; over ‖â_j‖², less its noise.
-                let own = 1.0 / gram_inv[j] - noise_off[j];
-                let whole = signal[j] - noise[j];
-                let share2 = own / whole;
-                if own > 0.0 && whole > 0.0 && share2.is_finite() {
-                    share2.min(1.0).sqrt()
-                } else {
-                    0.0
-                }
-            })
-            .collect(),
-    )
+    Some(Denoised {
+        // ‖(I − P)â_j‖² = 1 / [(ÂᴴÂ)⁻¹]_jj, less its noise; ‖â_j‖², less its noise.
+        own: (0..q).map(|j| 1.0 / gram_inv[j] - noise_off[j]).collect(),
+        whole: (0..q).map(|j| signal[j] - noise[j]).collect(),
+        own_sd: own_var.iter().map(|v| v.sqrt()).collect(),
+        noise,
+    })
 }
 
 /// Add the job-level `regions_unreliable` wherever a plane is
 /// `ill_conditioned`, or `denoised` (per plane of `fit.planes`,
-/// [`denoised_shares`]) puts a plane's own share below the same threshold,
+/// [`Denoised::shares`]) puts a plane's own share below the same threshold,
 /// or, with coefficients from the trials, a plane is `trial_effect_small`
 /// and another is not (module doc, session 18).
 pub fn warn_regions_unreliable(fit: &Fit, denoised: Option<&[f64]>, solution: &mut Solution) {

@@ -33,22 +33,33 @@ use super::Unbiased;
 
 /// What every plane's region needs, formed once per solve.
 pub struct Region {
-    /// `b̂ = Ĉ − C*` per used plane.
-    bias: DVector<Complex64>,
+    /// `Ĉ`, the fitted correction, per used plane.
+    fitted: DVector<Complex64>,
+    /// `C*` per used plane.
+    unbiased: DVector<Complex64>,
 }
 
 impl Region {
     /// `c` the fitted correction.
     pub fn new(u: &Unbiased, c: &DVector<Complex64>) -> Region {
-        Region { bias: c - &u.c }
+        Region {
+            fitted: c.clone(),
+            unbiased: u.c.clone(),
+        }
     }
 
     /// Plane `col`'s mean square error (8.11): `widened` its covariance
     /// `Σ_jj(C*)` already scaled by (8.4) and the samples' widening (8.5).
-    pub fn plane(&self, col: usize, widened: &Matrix2<f64>) -> Matrix2<f64> {
-        let b = self.bias[col];
+    ///
+    /// `stretch` (`trust::selection_stretch`, 1 but for planes that passed
+    /// the `trial_effect_small` test near its limit) is how far `C*_j` is
+    /// short because the plane passed: the region is formed at `s C*_j`,
+    /// its scatter `s² Σ_jj(C*)` (the coefficients' part of it grows with
+    /// the correction's square) and its bias `Ĉ_j − s C*_j` (session 24).
+    pub fn plane(&self, col: usize, widened: &Matrix2<f64>, stretch: f64) -> Matrix2<f64> {
+        let b = self.fitted[col] - self.unbiased[col] * stretch;
         let b = Vector2::new(b.re, b.im);
-        widened + b * b.transpose()
+        widened * (stretch * stretch) + b * b.transpose()
     }
 }
 
@@ -65,9 +76,23 @@ mod tests {
         };
         let c = DVector::from_vec(vec![Complex64::new(0.8, 0.9)]);
         let widened = Matrix2::new(0.05, 0.01, 0.01, 0.04);
-        let region = Region::new(&u, &c).plane(0, &widened);
+        let region = Region::new(&u, &c).plane(0, &widened, 1.0);
         // b̂ = Ĉ − C* = (−0.2, −0.1): its square along that direction only.
         let want = widened + Matrix2::new(0.04, 0.02, 0.02, 0.01);
+        assert!((region - want).norm() < 1e-12, "{region} {want}");
+    }
+
+    #[test]
+    fn a_stretched_estimate_scales_the_scatter_and_lengthens_the_bias() {
+        let u = Unbiased {
+            c: DVector::from_vec(vec![Complex64::new(1.0, 1.0)]),
+            map: DMatrix::from_element(1, 1, Complex64::new(-0.2, 0.0)),
+        };
+        let c = DVector::from_vec(vec![Complex64::new(0.8, 0.9)]);
+        let widened = Matrix2::new(0.05, 0.01, 0.01, 0.04);
+        let region = Region::new(&u, &c).plane(0, &widened, 1.1);
+        // s C* = (1.1, 1.1), b̂ = (−0.3, −0.2); the scatter times 1.21.
+        let want = widened * 1.21 + Matrix2::new(0.09, 0.06, 0.06, 0.04);
         assert!((region - want).norm() < 1e-12, "{region} {want}");
     }
 }

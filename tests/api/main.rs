@@ -13,6 +13,7 @@ mod common;
 #[path = "../job/support.rs"]
 mod job_support;
 
+mod contract_fields;
 mod errors;
 mod machine_ids;
 mod machines;

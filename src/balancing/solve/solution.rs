@@ -122,7 +122,8 @@ pub struct Residual {
     pub speed_rpm: f64,
     pub sensor: String,
     pub unit: Unit,
-    /// Amplitude as found (reference run), in the sensor's unit.
+    /// Amplitude before the corrections, in the sensor's unit: the reference
+    /// run's reading, or with `from_run` that run's (runout subtracted).
     pub amplitude_before: f64,
     /// Predicted amplitude after correction, in the sensor's unit.
     pub amplitude: f64,

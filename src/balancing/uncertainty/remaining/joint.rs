@@ -61,7 +61,11 @@
 //! leverages instead, 1.7 M saved). Open: with the weight forced to 0 the
 //! ten-speed figures fall short (scripts/issue12_joint_shortfall.py: the
 //! noisy `Ŵ` treated as known), the pooled weight and its calibration
-//! making up the rest.
+//! making up the rest. Session 24 derived the conditioning through the
+//! de-noised Gram `ŴᵀD⁻¹Ŵ − N` (errors in variables; method §8, "Session
+//! 24, amp24"): it removes that shortfall, but with stated noise and
+//! 10–20 % trials it over-covers (97.1–98.4 %), so it was measured, not
+//! kept (docs/experiments/issue12-denoised-conditioning.patch).
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 use num_complex::Complex64;

@@ -22,7 +22,7 @@ git -C "$tmp/wt" apply "$repo/docs/experiments/issue12-denoised-conditioning.pat
 (cd "$tmp/wt" && CARGO_TARGET_DIR="$repo/target" cargo build --release --locked >&2)
 bin="$tmp/fieldbal"
 cp "$repo/target/release/fieldbal" "$bin"
-for variant in "AMP24_OLD=1" "AMP24_NONE=1" "AMP24_S0=1" "AMP24_S0=1 AMP24_VINV=1" "AMP24_VINV=1"; do
+for variant in "AMP24_OLD=1" "AMP24_NONE=1" "AMP24_S0=1" "AMP24_S0=1 AMP24_VINV=1" "AMP24_VINV=1" "AMP24_ADDG=1" "AMP24_NOADD=1"; do
   for mode in table samples; do
     echo "== $variant $mode"
     env $variant nice -n 10 python3 "$repo/scripts/issue12_table.py" "$bin" "$jobs" "$mode" "$cases"

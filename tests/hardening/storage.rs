@@ -28,8 +28,12 @@ async fn page_count(pool: &sqlx::AnyPool) -> i64 {
         .unwrap()
 }
 
-async fn set_max_pages(pool: &sqlx::AnyPool, pages: i64) {
+fn set_max_pages_for_new_connections(pages: i64) {
     MAX_PAGES.store(pages, Ordering::SeqCst);
+}
+
+async fn set_max_pages(pool: &sqlx::AnyPool, pages: i64) {
+    set_max_pages_for_new_connections(pages);
     sqlx::query(&format!("PRAGMA max_page_count = {pages}"))
         .execute(pool)
         .await
@@ -49,29 +53,69 @@ fn limit_pages(
     })
 }
 
+/// A service on its own SQLite file whose disk can be filled
+/// ([`set_max_pages`]). One at a time: the page limit is process-wide (a
+/// connection the pool reopens takes the current one), so two such tests in
+/// parallel would fill each other's disk.
+struct FullDisk {
+    pool: sqlx::AnyPool,
+    addr: std::net::SocketAddr,
+    stop: tokio::sync::oneshot::Sender<()>,
+    server: tokio::task::JoinHandle<std::io::Result<()>>,
+    _dir: tempfile::TempDir,
+    _one_at_a_time: tokio::sync::MutexGuard<'static, ()>,
+}
+
+static ONE_FULL_DISK: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
+
+impl FullDisk {
+    async fn start() -> FullDisk {
+        let one_at_a_time = ONE_FULL_DISK.lock().await;
+        set_max_pages_for_new_connections(1_000_000);
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("full.db");
+        // One connection: the page limit applies to it, and a connection left
+        // inside a transaction would block every later request.
+        let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
+            .await
+            .unwrap();
+        let state = AppState::new(pool.clone());
+        let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+        let addr = listener.local_addr().unwrap();
+        let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+        let server = tokio::spawn(http::serve(listener, state, async {
+            let _ = stopped.await;
+        }));
+        FullDisk {
+            pool,
+            addr,
+            stop,
+            server,
+            _dir: dir,
+            _one_at_a_time: one_at_a_time,
+        }
+    }
+
+    fn url(&self, path: &str) -> String {
+        format!("http://{}{path}", self.addr)
+    }
+
+    async fn stop(self) {
+        let _ = self.stop.send(());
+        self.server.await.unwrap().unwrap();
+    }
+}
+
 #[tokio::test]
 async fn writes_fail_cleanly_on_a_full_disk_and_recover_once_space_is_freed() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("full.db");
-    // One connection: the page limit applies to it, and a connection left
-    // inside a transaction would block every later request.
-    let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
-        .await
-        .unwrap();
-    let state = AppState::new(pool.clone());
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let addr = listener.local_addr().unwrap();
-    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let server = tokio::spawn(http::serve(listener, state, async {
-        let _ = stopped.await;
-    }));
-    let client = reqwest::Client::new();
-    let url = |p: &str| format!("http://{addr}{p}");
+    let disk = FullDisk::start().await;
+    let (pool, client) = (&disk.pool, reqwest::Client::new());
+    let url = |p: &str| disk.url(p);
     let session: Value = example("compressor-multispeed-noisy.json")["session"].clone();
 
     let (status, _, _) = send(client.get(url("/healthz"))).await;
     assert_eq!(status, 200);
-    set_max_pages(&pool, page_count(&pool).await + 2).await;
+    set_max_pages(pool, page_count(pool).await + 2).await;
 
     // Fill the allowed pages; a bounded number of sessions does it.
     let mut refused = None;
@@ -96,15 +140,14 @@ async fn writes_fail_cleanly_on_a_full_disk_and_recover_once_space_is_freed() {
     let (status, _, _) = send(client.get(url("/api/v1/sessions"))).await;
     assert_eq!(status, 200);
 
-    set_max_pages(&pool, 1_000_000).await;
+    set_max_pages(pool, 1_000_000).await;
     for _ in 0..3 {
         let (status, _, body) = post(&client, &url("/api/v1/sessions"), &session).await;
         assert_eq!(status, 201, "writes recover once space is freed: {body}");
     }
     let (status, _, _) = send(client.get(url("/healthz"))).await;
     assert_eq!(status, 200);
-    let _ = stop.send(());
-    server.await.unwrap().unwrap();
+    disk.stop().await;
 }
 
 #[tokio::test]
@@ -186,20 +229,9 @@ async fn serve_says_why_it_cannot_reach_postgres() {
 /// an undeclared status on the run it appends or the solution it stores.
 #[tokio::test]
 async fn every_write_declares_the_full_disk_answer_it_gives() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("full-writes.db");
-    let pool = fieldbal::db::connect_pool(path.to_str().unwrap(), Some(1), Some(limit_pages))
-        .await
-        .unwrap();
-    let state = AppState::new(pool.clone());
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let addr = listener.local_addr().unwrap();
-    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
-    let server = tokio::spawn(http::serve(listener, state, async {
-        let _ = stopped.await;
-    }));
-    let client = reqwest::Client::new();
-    let url = |p: &str| format!("http://{addr}{p}");
+    let disk = FullDisk::start().await;
+    let (pool, client) = (&disk.pool, reqwest::Client::new());
+    let url = |p: &str| disk.url(p);
     let (status, _, doc) = send(client.get(url("/api/v1/openapi.json"))).await;
     assert_eq!(status, 200);
     let mut session: Value = example("compressor-multispeed-noisy.json")["session"].clone();
@@ -215,7 +247,7 @@ async fn every_write_declares_the_full_disk_answer_it_gives() {
     assert_eq!(status, 201, "{stored}");
     let id = stored["id"].as_str().unwrap().to_string();
 
-    set_max_pages(&pool, page_count(&pool).await + 2).await;
+    set_max_pages(pool, page_count(pool).await + 2).await;
     let mut full = false;
     for _ in 0..200 {
         let (status, _, _) = post(&client, &url("/api/v1/sessions"), &session).await;
@@ -284,8 +316,7 @@ async fn every_write_declares_the_full_disk_answer_it_gives() {
         "answers the OpenAPI document does not declare: {undeclared:#?}"
     );
     assert!(refused > 0, "the full disk refused none of the writes");
-    let _ = stop.send(());
-    server.await.unwrap().unwrap();
+    disk.stop().await;
 }
 
 /// Started with the default database (`sqlite://fieldbal.db`, relative), the

@@ -1,7 +1,7 @@
 // Inputs that check themselves as they are typed into, and the marks that put
 // a message (the form's own or the server's `error.field`) next to the field.
 
-import { h, $, $$ } from "./dom.js";
+import { h, $, $$, replace } from "./dom.js";
 import { check } from "./num.js";
 
 const INCOMPLETE = /^([+-]?[.,]?|[+-]?\d+([.,]\d*)?[eE][+-]?)$/;
@@ -172,4 +172,22 @@ export function keepFocus(root) {
     again.focus();
     if (typeof start === "number") again.setSelectionRange(start, end);
   };
+}
+
+// Send a stand-alone page's request (`send`, a function returning the
+// service's answer) from its `run` button: the button off while it is out,
+// the answer kept in `typed.answer` and shown by `view` in `result`; a
+// refusal marked at the field it names, or else said in a banner on `root`.
+export async function sendAndShow({ root, run, result, typed, send, view }) {
+  run.disabled = true;
+  try {
+    typed.answer = await send();
+    replace(result, view(typed.answer));
+  } catch (err) {
+    typed.answer = null;
+    replace(result);
+    if (!markServerError(err)) banner(root, "error", err.message);
+  } finally {
+    run.disabled = false;
+  }
 }

@@ -5,7 +5,7 @@
 // the service fits the decay and says what it could and could not tell.
 
 import { h, replace, $ } from "../page/dom.js";
-import { numberInput, selectInput, mark, clearMarks, markServerError, banner } from "../page/fields.js";
+import { numberInput, selectInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
 import { parseNumber, sig } from "../page/num.js";
 import { api } from "../job/api.js";
 
@@ -120,17 +120,7 @@ export function renderDecay(root) {
     if (!off.validateNow()) return off.focus();
     const body = { samples: parsed.values, dt_s: typed.dt_s, damping: typed.damping };
     if (typed.offset !== null) body.offset = typed.offset;
-    run.disabled = true;
-    try {
-      typed.answer = await api.identifyFreeDecay(body);
-      replace(result, answerView(typed.answer));
-    } catch (err) {
-      typed.answer = null;
-      replace(result);
-      if (!markServerError(err)) banner(root, "error", err.message);
-    } finally {
-      run.disabled = false;
-    }
+    await sendAndShow({ root, run, result, typed, send: () => api.identifyFreeDecay(body), view: answerView });
   }
 
   replace(root,

@@ -6,7 +6,7 @@
 // worksheet figure beside it and its warnings in its words. Nothing is stored.
 
 import { h, replace, $ } from "../page/dom.js";
-import { numberInput, selectInput, textInput, mark, clearMarks, markServerError, banner } from "../page/fields.js";
+import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
 import { parseNumber, fmt, fmtAngle } from "../page/num.js";
 import { api } from "../job/api.js";
 
@@ -138,17 +138,7 @@ export function renderResidual(root) {
       conventions: { phase: typed.phase, angle_direction: typed.angle_direction },
     };
     if (typed.plane) body.plane = typed.plane;
-    run.disabled = true;
-    try {
-      typed.answer = await api.residualUnbalance(body);
-      replace(result, answerView(typed.answer));
-    } catch (err) {
-      typed.answer = null;
-      replace(result);
-      if (!markServerError(err)) banner(root, "error", err.message);
-    } finally {
-      run.disabled = false;
-    }
+    await sendAndShow({ root, run, result, typed, send: () => api.residualUnbalance(body), view: answerView });
   }
 
   replace(root,

@@ -21,16 +21,8 @@ use super::jeffcott;
 
 pub async fn a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(stand: &Stand) {
     let b = &stand.browser;
-    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, 0.05);
     let speeds = jeffcott::speeds(2800.0, 4400.0, 5);
-    let session =
-        serde_json::to_value(jeffcott::session(&[rotor], &speeds, Unit::UmPp, 0.0, 0)).unwrap();
-    let said = post(
-        stand,
-        "/api/v1/identify/rotor",
-        serde_json::json!({ "session": session }),
-    )
-    .await;
+    let (session, said) = super::identified(stand, 0.05, &speeds, 0.0, 0).await;
     let critical = said["results"][0]["critical_speed_rpm"]
         .as_f64()
         .unwrap_or_else(|| panic!("a result: {said}"));
@@ -154,16 +146,8 @@ async fn a_corrected_run_is_identified_again(
 /// known to the last digit; each now carries its "± half-width".
 pub async fn a_critical_speed_is_shown_with_its_half_width(stand: &Stand) {
     let b = &stand.browser;
-    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, 0.05);
     let speeds = jeffcott::speeds(1800.0, 3200.0, 8);
-    let session =
-        serde_json::to_value(jeffcott::session(&[rotor], &speeds, Unit::UmPp, 0.02, 7)).unwrap();
-    let said = post(
-        stand,
-        "/api/v1/identify/rotor",
-        serde_json::json!({ "session": session }),
-    )
-    .await;
+    let (session, said) = super::identified(stand, 0.05, &speeds, 0.02, 7).await;
     let r = &said["results"][0];
     let critical = r["critical_speed_rpm"]
         .as_f64()

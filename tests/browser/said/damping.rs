@@ -6,7 +6,6 @@
 //! words: the service's `damping_unresolved` warning, with the fitted ratio
 //! and its resolution, is now shown as said, under the result it concerns.
 
-use fieldbal::balancing::model::Unit;
 use serde_json::Value;
 
 use crate::harness::stand::{open_at_solve, post, Stand};
@@ -17,17 +16,8 @@ use super::jeffcott;
 pub async fn an_unresolved_damping_is_shown_as_a_bound(stand: &Stand) {
     let b = &stand.browser;
     // As tests/identification/rotor.rs: 2450 rpm, between the speeds of the grid.
-    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, 0.0);
     let speeds = jeffcott::speeds(1200.0, 3600.0, 9);
-    let session =
-        serde_json::to_value(jeffcott::session(&[rotor], &speeds, Unit::UmPp, 0.0, 0)).unwrap();
-    // What the service says of it, to compare the page with.
-    let said = post(
-        stand,
-        "/api/v1/identify/rotor",
-        serde_json::json!({ "session": session }),
-    )
-    .await;
+    let (session, said) = super::identified(stand, 0.0, &speeds, 0.0, 0).await;
     let r = &said["results"][0];
     assert_eq!(r["damping_ratio_bound"], "upper", "{said}");
     assert_eq!(r["amplification_factor_bound"], "lower", "{said}");

@@ -2,7 +2,9 @@
 //! threads fed by one queue; large validations run on the blocking pool.
 //!
 //! A solve waits in the queue for at most the configured wait, then the
-//! request is refused with 503 and `Retry-After`, and its solve never runs.
+//! request is refused with 503 and `Retry-After`, and its solve never runs;
+//! one queued while a solver thread is free is taken whatever the wait
+//! (with `--solve-queue-ms 0`, refused only when every thread is busy).
 //! A request dropped while queued (its time limit passed, or the client left)
 //! is skipped by the solver threads; one already solving is asked to stop
 //! (`balancing::cancel`): the kit fit's search stops at its next checkpoint,
@@ -72,6 +74,9 @@ struct Queue {
 struct Pending {
     jobs: VecDeque<Job>,
     closed: bool,
+    /// Solver threads waiting for a job: a job queued while more threads
+    /// wait than jobs are queued is taken without waiting for a solve to end.
+    idle: usize,
 }
 
 impl std::fmt::Debug for Queue {
@@ -96,7 +101,9 @@ impl Queue {
             if pending.closed {
                 return None;
             }
+            pending.idle += 1;
             pending = self.ready.wait(pending).unwrap_or_else(|e| e.into_inner());
+            pending.idle -= 1;
         }
     }
 }
@@ -150,12 +157,24 @@ impl Slots {
                 let _ = send.send(cancel::scope(cancel, work));
             }
         });
-        {
+        let free = {
             let queue = &self.pool.0;
-            queue.lock().jobs.push_back(job);
+            let mut pending = queue.lock();
+            let free = pending.idle > pending.jobs.len();
+            pending.jobs.push_back(job);
             queue.ready.notify_one();
-        }
-        let received = match tokio::time::timeout(self.wait, &mut answer).await {
+            free
+        };
+        // A thread is free for it: it is not waiting behind other solves, so
+        // it is not refused, however long that thread takes to wake (with no
+        // wait configured, it was refused whenever the thread had not picked
+        // it up by the timer's first tick).
+        let waited = if free {
+            Ok((&mut answer).await)
+        } else {
+            tokio::time::timeout(self.wait, &mut answer).await
+        };
+        let received = match waited {
             Ok(received) => received,
             // Still queued: refuse, and the solve never runs. Already
             // started: its answer is on the way.
@@ -295,6 +314,26 @@ mod tests {
             .solve(|| std::thread::current().name().map(str::to_string))
             .await;
         assert!(matches!(name, Ok(Some(n)) if n.starts_with("fieldbal-solver-")));
+    }
+
+    /// With no wait (`--solve-queue-ms 0`) a solve is refused only when every
+    /// solver thread is busy: an idle thread takes it, however long the
+    /// thread takes to wake. It was refused whenever the thread had not
+    /// picked it up by the timer's first tick, so on a loaded machine none
+    /// of four concurrent solves ran (CI, tests/hardening/limits.rs).
+    #[tokio::test(flavor = "current_thread", start_paused = true)]
+    async fn an_idle_solver_takes_a_solve_even_with_no_wait() {
+        let slots = Slots::new(1, Duration::ZERO);
+        // The thread waits for jobs once it has started (bounded).
+        for _ in 0..1_000 {
+            if slots.pool.0.lock().idle == 1 {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(1));
+        }
+        for i in 0..200 {
+            assert!(slots.solve(|| ()).await.is_ok(), "solve {i} was refused");
+        }
     }
 
     #[tokio::test]

@@ -265,7 +265,7 @@ async fn solves_beyond_the_slots_are_refused_with_retry_after() {
     let client = client();
     let body = json!({"session": session(16, 64, 3), "options": {"objective": "min_max"}});
     let url = server.url("/api/v1/solve");
-    let answers = futures_join(&client, &url, &body, 4).await;
+    let answers = futures_join(&client, &url, &body, 8).await;
     let busy: Vec<&(u16, Option<String>, Value)> =
         answers.iter().filter(|(s, _, _)| *s == 503).collect();
     let statuses: Vec<(u16, &Value)> = answers.iter().map(|(s, _, b)| (*s, &b["error"])).collect();
@@ -275,7 +275,7 @@ async fn solves_beyond_the_slots_are_refused_with_retry_after() {
     );
     assert!(
         !busy.is_empty(),
-        "with one slot and no queue, some of 4 are refused"
+        "with one slot and no queue, some of 8 are refused"
     );
     for (_, retry_after, body) in busy {
         assert!(retry_after.is_some(), "503 carries Retry-After");

@@ -324,14 +324,16 @@ mod tests {
     #[tokio::test(flavor = "current_thread", start_paused = true)]
     async fn an_idle_solver_takes_a_solve_even_with_no_wait() {
         let slots = Slots::new(1, Duration::ZERO);
-        // The thread waits for jobs once it has started (bounded).
-        for _ in 0..1_000 {
-            if slots.pool.0.lock().idle == 1 {
-                break;
-            }
-            std::thread::sleep(std::time::Duration::from_millis(1));
-        }
         for i in 0..200 {
+            // The thread is back waiting for jobs (bounded): it answers a
+            // solve just before it returns to the queue, and a solve queued
+            // in between finds it busy, as it would any other.
+            for _ in 0..1_000 {
+                if slots.pool.0.lock().idle == 1 {
+                    break;
+                }
+                std::thread::sleep(std::time::Duration::from_millis(1));
+            }
             assert!(slots.solve(|| ()).await.is_ok(), "solve {i} was refused");
         }
     }

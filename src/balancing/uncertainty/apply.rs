@@ -201,7 +201,13 @@ pub fn fill(fit: &Fit, options: &SolveOptions, cov: &[Vec<Matrix2<f64>>], soluti
     // The remaining vibration's bound, for the correction that is fitted:
     // its own noise at `Ĉ` (a second propagation where `C*` is formed).
     let at_fitted = c_star.map(|_| super::propagate(&problem, &fit.c, known));
-    super::remaining::fitted::fill(fit, cov, at_fitted.as_ref().unwrap_or(&prop), solution);
+    super::remaining::fitted::fill(
+        fit,
+        cov,
+        at_fitted.as_ref().unwrap_or(&prop),
+        c_star.map(|_| &prop),
+        solution,
+    );
 
     for (diag, &j) in solution.planes.iter_mut().zip(&sel.planes) {
         let tau = checked

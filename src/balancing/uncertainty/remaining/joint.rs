@@ -61,11 +61,17 @@
 //! leverages instead, 1.7 M saved). Open: with the weight forced to 0 the
 //! ten-speed figures fall short (scripts/issue12_joint_shortfall.py: the
 //! noisy `Ŵ` treated as known), the pooled weight and its calibration
-//! making up the rest. Session 24 derived the conditioning through the
-//! de-noised Gram `ŴᵀD⁻¹Ŵ − N` (errors in variables; method §8, "Session
-//! 24, amp24"): it removes that shortfall, but with stated noise and
-//! 10–20 % trials it over-covers (97.1–98.4 %), so it was measured, not
-//! kept (docs/experiments/issue12-denoised-conditioning.patch).
+//! making up the rest.
+//!
+//! De-noised (session 24, `denoise.rs`): where the caller asks for it
+//! (`Inputs::denoise`, from `C*`) and `G − N` is positive definite, the
+//! correction's error is recovered through the de-noised Gram `ŴᵀD⁻¹Ŵ −
+//! N` (errors in variables, Fuller 1987; method §8, "Session 24, amp24"),
+//! its covariance is Fuller's sandwich `V` for every row, and 8.9's product
+//! term is replaced by the product with the observed `δ̃`, split along the
+//! row's own error and conditioned on its prediction (amp24b's form (7);
+//! `denoise::row`). That removes the shortfall above and holds every
+//! ten-speed case of the table (module doc of `denoise.rs`).
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 use num_complex::Complex64;
@@ -73,6 +79,8 @@ use num_complex::Complex64;
 use super::mgs::{qr_in_place, squares_and_neighbours};
 use super::{sym, Row};
 
+#[path = "denoise.rs"]
+mod denoise;
 #[path = "joint_product.rs"]
 mod product;
 use product::Second;
@@ -97,15 +105,21 @@ pub struct Inputs<'a> {
     pub omega_lambda: Option<(&'a DMatrix<Complex64>, &'a [Complex64])>,
     /// The readings' covariances, `[row][run]`.
     pub cov: &'a [Vec<Matrix2<f64>>],
+    /// Condition through the de-noised Gram (`denoise.rs`, errors in
+    /// variables) where `omega_lambda` is given and `G − N` is positive
+    /// definite.
+    pub denoise: bool,
 }
 
-/// Every row's bound parts (module doc), or `None` where the conditioning
+/// Every row's bound parts (module doc), and whether the de-noised
+/// conditioning (`denoise.rs`) was formed (its centre holds the
+/// errors-in-variables bias: no move, 8.12); `None` where the conditioning
 /// on all rows is not used: with fewer than two complex degrees of freedom
 /// over the planes (rows `< q + 2`; module doc, "One degree of freedom"), a
 /// row without noise, a rank deficient stack. The caller then conditions
 /// each row on its own (method 8.6).
 #[inline(never)] // seen on its own in callgrind (issue 15)
-pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
+pub fn rows(inp: &Inputs) -> Option<(Vec<Row>, bool)> {
     let n = inp.w.nrows();
     let (q, m) = (inp.planes.len(), inp.used_rows.len());
     if q == 0
@@ -159,7 +173,16 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
     }
     // The diagonal was checked nonzero above.
     let r_inv = r.solve_upper_triangular(&DMatrix::identity(nn, nn))?;
-    let mc = &r_inv * qty;
+    let den = match (inp.denoise, inp.omega_lambda) {
+        (true, Some((omega, lambda))) => {
+            denoise::of(&r, &qty, &f, inp.used_rows, inp.cov, omega, lambda)
+        }
+        _ => None,
+    };
+    let mc = match &den {
+        Some(d) => d.delta.clone(),
+        None => &r_inv * qty,
+    };
     // The used rows' leverages `H_b = Q_b Q_bᵀ` (2 × 2) from `Q`'s columns:
     // `W_b R⁻¹ = L_b Q_b`, so `Σ_ε,b = W_b Λ⁻¹ W_bᵀ = L_b H_b L_bᵀ` without
     // the product `R⁻ᵀ Wᵀ` (issue 15).
@@ -177,15 +200,26 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
             *x += z * cj;
         }
     }
-    let added = second.map(|s| {
-        let l_inv = &r_inv * r_inv.transpose();
-        s.added(&l_inv, inp.r_hat, &centre)
-    });
+    // Where the de-noised conditioning is formed, the product with the
+    // observed `δ̃` split along the row's own error (`denoise.rs`, amp24b);
+    // otherwise 8.9's product term with `Λ⁻¹`.
+    let split = match (&den, &second) {
+        (Some(d), Some(s)) => Some((d, s, s.split_denoised(&d.delta, &(&d.z * d.z.transpose())))),
+        _ => None,
+    };
+    let added = match split {
+        Some(_) => None,
+        None => second.as_ref().map(|s| {
+            let l_inv = &r_inv * r_inv.transpose();
+            s.added(&l_inv, inp.r_hat, &centre)
+        }),
+    };
     let out = (0..n)
         .map(|a| {
-            let (e11, e12, e22) = match used[a] {
-                usize::MAX => unused_row(inp, a, &r_inv),
-                i => {
+            let (e11, e12, e22) = match (used[a], &den) {
+                (_, Some(d)) => unused_row(inp, a, &d.z),
+                (usize::MAX, None) => unused_row(inp, a, &r_inv),
+                (i, None) => {
                     let [g0, g1, g2] = f[i];
                     // L_b = (L_b⁻¹)⁻¹, lower triangular.
                     let (l11, l22) = (1.0 / g0, 1.0 / g2);
@@ -197,13 +231,19 @@ pub fn rows(inp: &Inputs) -> Option<Vec<Row>> {
                     (e11, e12, e22)
                 }
             };
-            let vz = added.as_ref().map_or(0.0, |v| v[a]);
-            let eps = Matrix2::new(e11 + vz * 0.5, e12, e12, e22 + vz * 0.5);
-            let mean = Vector2::new(centre[a].re, centre[a].im);
+            let sigma = Matrix2::new(e11, e12, e12, e22);
+            let (c, eps) = match &split {
+                Some((d, s, parts)) => denoise::row(inp, a, centre[a], sigma, d, s, parts),
+                None => {
+                    let vz = added.as_ref().map_or(0.0, |v| v[a]);
+                    (centre[a], sigma + Matrix2::identity() * (vz * 0.5))
+                }
+            };
+            let mean = Vector2::new(c.re, c.im);
             Row::Parts(mean, eps, sym(&inp.own[a]) - eps)
         })
         .collect();
-    Some(out)
+    Some((out, den.is_some()))
 }
 
 /// `L⁻¹` of `D = L Lᵀ` (Cholesky) as `[l⁻¹₁₁, l⁻¹₂₁, l⁻¹₂₂]`; `None` when

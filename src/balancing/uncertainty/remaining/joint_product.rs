@@ -112,3 +112,66 @@ impl<'a> Second<'a> {
             .collect()
     }
 }
+
+/// The product with the observed `δ̃` per row (`Second::split_denoised`).
+pub struct Split {
+    /// `Σ_k s_ak |ω_k·δ̃|²`.
+    pub known: Vec<f64>,
+    /// `Σ_k s_ak ω_k V ω_kᴴ`, twice the plug-in's `E[dW_a V dW_aᵀ]`.
+    pub vterm: Vec<f64>,
+    /// `β_a`, the product's part along the row's own error.
+    pub beta: Vec<Complex64>,
+}
+
+impl Second<'_> {
+    /// The product term redone for the de-noised conditioning (`denoise.rs`;
+    /// method 8, session 24, amp24b). Where `r = 0`, `R_a − m_a = W_a(C̃ −
+    /// C) − dW_a δ̃` exactly (`m_a = Ŵ_a δ̃`, `δ̃ = Ĉ − C̃`), so the product
+    /// with the unknown part `C̃ − C` is already inside the plug-in `Ŵ_a V
+    /// Ŵ_aᵀ` (whose mean is `W_a V W_aᵀ + E[dW_a V dW_aᵀ]`) and the product
+    /// that remains is with the observed `δ̃`. Per row: `Σ_k s_ak
+    /// |ω_k·δ̃|²`, `Σ_k s_ak ω_k V ω_kᴴ` (`V` real `2q × 2q`) and `β_a = Σ_k
+    /// s_ak λ̄_k (ω_k·δ̃) / V_e,a` (0 where `V_e,a` is not positive).
+    pub fn split_denoised(&self, delta: &DVector<f64>, v: &DMatrix<f64>) -> Split {
+        let (n, runs) = (self.s.nrows(), self.lambda.len());
+        let q = self.omega.ncols();
+        let d: Vec<Complex64> = (0..q)
+            .map(|j| Complex64::new(delta[2 * j], delta[2 * j + 1]))
+            .collect();
+        let wd: Vec<Complex64> = (0..runs)
+            .map(|k| (0..q).map(|j| self.omega[(k, j)] * d[j]).sum())
+            .collect();
+        let hv = self.omega * hermitian_part(v) * self.omega.adjoint();
+        let (mut known, mut vterm, mut beta) = (
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![Complex64::new(0.0, 0.0); n],
+        );
+        for k in 0..runs {
+            let (mk, vk, lw) = (
+                wd[k].norm_sqr(),
+                hv[(k, k)].re,
+                self.lambda[k].conj() * wd[k],
+            );
+            for a in 0..n {
+                let s = self.s[(a, k)];
+                known[a] += s * mk;
+                vterm[a] += s * vk;
+                beta[a] += lw * s;
+            }
+        }
+        for (b, &ve) in beta.iter_mut().zip(&self.ve) {
+            *b = if ve.is_finite() && ve > 0.0 {
+                *b / ve
+            } else {
+                Complex64::new(0.0, 0.0)
+            };
+        }
+        Split { known, vterm, beta }
+    }
+
+    /// `V_e,a = Σ_k s_ak |λ_k|²`, the variance of the row's own error.
+    pub fn ve(&self, a: usize) -> f64 {
+        self.ve[a]
+    }
+}

@@ -63,6 +63,7 @@ impl AllUsed {
             correction_full: &self.full,
             omega_lambda: None,
             cov: &[],
+            denoise: false,
         }
     }
 }
@@ -107,8 +108,9 @@ fn the_products_equal_the_per_row_reference_form() {
         correction_full: &full,
         omega_lambda: Some((&omega_rows, &lambda)),
         cov: &cov,
+        denoise: false,
     };
-    let rows = rows(&inp).expect("formed");
+    let (rows, _) = rows(&inp).expect("formed");
 
     // Reference, as session 9 wrote it.
     let wrow = |a: usize| -> Vec<Complex64> { used_planes.iter().map(|&p| w[(a, p)]).collect() };
@@ -213,7 +215,7 @@ fn in_the_linear_gaussian_model_the_bound_conditioned_on_all_rows_holds_95_perce
         });
         let dc = -(&pinv * &e);
         let v = &e + &w * &dc;
-        let rows = rows(&fixture.inputs(&w, &v, &own)).expect("formed");
+        let (rows, _) = rows(&fixture.inputs(&w, &v, &own)).expect("formed");
         let truth = &w * &dc;
         for (a, row) in rows.iter().enumerate() {
             let bound = row.amplitude_95(v[a], Pooled::plug_in(0.0));

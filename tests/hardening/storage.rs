@@ -150,6 +150,17 @@ async fn writes_fail_cleanly_on_a_full_disk_and_recover_once_space_is_freed() {
     disk.stop().await;
 }
 
+/// `fieldbal serve` on `database`, which must refuse to start: its log.
+fn serve_refused(database: &str) -> String {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "127.0.0.1:0", "--database", database])
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    assert!(!out.status.success(), "serve started on {database}");
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
 #[tokio::test]
 async fn serve_refuses_to_start_on_a_read_only_database() {
     let dir = tempfile::tempdir().unwrap();
@@ -157,13 +168,7 @@ async fn serve_refuses_to_start_on_a_read_only_database() {
     // Create it, then open it read-only (file permissions do not stop root).
     drop(fieldbal::db::connect(path.to_str().unwrap()).await.unwrap());
     let url = format!("sqlite://{}?mode=ro", path.display());
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args(["serve", "--listen", "127.0.0.1:0", "--database", &url])
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let log = String::from_utf8_lossy(&out.stderr);
+    let log = serve_refused(&url);
     assert!(log.contains("read-only"), "{log}");
 }
 
@@ -189,13 +194,7 @@ async fn serve_names_a_database_it_cannot_set_up_as_read_only() {
         .unwrap();
     conn.close().await.unwrap();
     let url = format!("sqlite://{}?mode=ro", path.display());
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args(["serve", "--listen", "127.0.0.1:0", "--database", &url])
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let log = String::from_utf8_lossy(&out.stderr);
+    let log = serve_refused(&url);
     assert!(log.contains("is read-only"), "{log}");
     assert!(!log.contains("timed out"), "{log}");
 }
@@ -205,19 +204,7 @@ async fn serve_names_a_database_it_cannot_set_up_as_read_only() {
 #[tokio::test]
 async fn serve_says_why_it_cannot_reach_postgres() {
     // Port 1 on loopback: nothing listens there, the connection is refused.
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
-        .args([
-            "serve",
-            "--listen",
-            "127.0.0.1:0",
-            "--database",
-            "postgres://fieldbal:secret@127.0.0.1:1/fieldbal",
-        ])
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let log = String::from_utf8_lossy(&out.stderr);
+    let log = serve_refused("postgres://fieldbal:secret@127.0.0.1:1/fieldbal");
     assert!(log.contains("refused"), "{log}");
     assert!(!log.contains("timed out"), "{log}");
     assert!(!log.contains("secret"), "the password is not logged: {log}");

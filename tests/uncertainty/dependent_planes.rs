@@ -39,12 +39,11 @@
 use fieldbal::balancing::model::SolveOptions;
 use fieldbal::balancing::uncertainty::CHI2_2_95;
 use nalgebra::Vector2;
-use num_complex::Complex64;
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::rotor_model::{rotor_with_planes, session};
-use super::{estimate, noisy, solve, Rotor, LEAD_WITH};
+use super::{estimate, noisy_runs, solve, Rotor, LEAD_WITH};
 use fieldbal::balancing::Solution;
 
 const SPEED: [f64; 1] = [3000.0];
@@ -66,10 +65,7 @@ fn each_job(nodes: &[usize], effect: f64, seed: u64, mut f: impl FnMut(&Rotor, &
         ..SolveOptions::default()
     };
     for _ in 0..REALISATIONS {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
+        let y = noisy_runs(&exact, &mut rng);
         let sol = solve(
             &session(LEAD_WITH, &SPEED, &rotor.trial, &y, None),
             &options,

@@ -66,7 +66,7 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::rotor_model::{rotor, session};
-use super::{estimate, noisy, remaining_held, solve, LAG_AGAINST, LEAD_WITH};
+use super::{estimate, noisy, noisy_runs, remaining_held, solve, LAG_AGAINST, LEAD_WITH};
 
 const LAG_WITH: Conventions = Conventions {
     phase: PhaseConvention::Lag,
@@ -161,10 +161,7 @@ fn run(speeds: &[f64], effect: f64, conv: Conventions, samples: bool, seed: u64)
                 .collect();
             (y, Some(s))
         } else {
-            let y: Vec<Vec<Complex64>> = exact
-                .iter()
-                .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-                .collect();
+            let y = noisy_runs(&exact, &mut rng);
             (y, None)
         };
         let sol = solve(

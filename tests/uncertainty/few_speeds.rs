@@ -33,7 +33,7 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::eiv::{coverage, in_window};
-use super::{estimate, noisy, remaining_held, session_of, solve, LEAD_WITH};
+use super::{estimate, noisy_runs, remaining_held, session_of, solve, LEAD_WITH};
 
 const SPEEDS: [f64; 3] = [600.0, 2200.0, 3800.0];
 const REALISATIONS: usize = 400;
@@ -120,10 +120,7 @@ fn run_n(
     let mut rng = StdRng::seed_from_u64(seed);
     let (mut rows, mut planes) = (Vec::new(), Vec::new());
     for _ in 0..realisations {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
+        let y = noisy_runs(&exact, &mut rng);
         let speed = |a: usize| speeds[a / SENSORS.len()];
         let session = session_of(
             "few speeds",

@@ -129,10 +129,7 @@ pub fn solve_noisy(
     conv: Conventions,
     rng: &mut StdRng,
 ) -> Solution {
-    let y: Vec<Vec<Complex64>> = exact
-        .iter()
-        .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, rng)).collect())
-        .collect();
+    let y = noisy_runs(exact, rng);
     solve(
         &session(conv, &rotor.trial, &y, None),
         &SolveOptions::default(),
@@ -230,6 +227,15 @@ pub fn noisy(y: Complex64, pct: f64, deg: f64, rng: &mut StdRng) -> Complex64 {
         1.0 + pct / 100.0 * n.sample(rng),
         deg.to_radians() * n.sample(rng),
     )
+}
+
+/// Each exact reading of each run with 2 % / 2° noise (`noisy`), drawn in
+/// run and row order.
+pub fn noisy_runs(exact: &[Vec<Complex64>], rng: &mut StdRng) -> Vec<Vec<Complex64>> {
+    exact
+        .iter()
+        .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, rng)).collect())
+        .collect()
 }
 
 pub fn solve(s: &Session, options: &SolveOptions) -> Solution {

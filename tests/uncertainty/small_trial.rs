@@ -14,7 +14,7 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 
 use super::rotor_model::{rotor, rotor_with_planes, session};
-use super::{estimate, noisy, session_of, solve, LEAD_WITH};
+use super::{estimate, noisy_runs, session_of, solve, LEAD_WITH};
 
 const SPEEDS: [f64; 4] = [1500.0, 2500.0, 3500.0, 4500.0];
 
@@ -131,10 +131,7 @@ fn with_trials_at_the_limit_the_planes_without_a_warning_hold_95_percent() {
     let mut jobs = Vec::with_capacity(REALISATIONS);
     let mut warned = 0;
     for _ in 0..REALISATIONS {
-        let y: Vec<Vec<Complex64>> = exact
-            .iter()
-            .map(|run| run.iter().map(|&z| noisy(z, 2.0, 2.0, &mut rng)).collect())
-            .collect();
+        let y = noisy_runs(&exact, &mut rng);
         let sol = solve(
             &session(LEAD_WITH, &TEN_SPEEDS, &r.trial, &y, None),
             &options,

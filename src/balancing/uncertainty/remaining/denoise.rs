@@ -70,11 +70,13 @@ use num_complex::Complex64;
 use super::product::{Second, Split};
 use super::{sym, Inputs};
 
-/// The de-noised error `δ̃` (`2q`), `Z = (G − N)⁻¹ Rᵀ` (`V = Z Zᵀ`) and `L`
-/// with `L Lᵀ = (G − N)⁻¹` (for `Λ_a`).
+/// The de-noised conditioning's parts for every row.
 pub struct Denoised {
+    /// The de-noised error `δ̃` (`2q`).
     pub delta: DVector<f64>,
+    /// `Z = (G − N)⁻¹ Rᵀ`, so that Fuller's sandwich is `V = Z Zᵀ`.
     pub z: DMatrix<f64>,
+    /// `L` with `L Lᵀ = (G − N)⁻¹`, for `Λ_a = Ŵ_a (G − N)⁻¹ Ŵ_aᵀ`.
     pub zh: DMatrix<f64>,
 }
 /// `r`, `qty`: the QR of the whitened stack and its right-hand side (`G =

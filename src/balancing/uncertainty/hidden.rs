@@ -156,6 +156,23 @@ pub fn denoised(
     let mut noise = vec![0.0; q]; // M_jj
     let mut noise_off = vec![0.0; q]; // N⊥_j
     let mut own_var = vec![0.0; q]; // Var ‖(I − P_o)â_j‖²
+
+    // `|Σ_l β_l ω_kl|²` per run and plane (`β_l = [(AᴴA)⁻¹]_lj /
+    // [(AᴴA)⁻¹]_jj`): how reading k's noise turns column j's own part, the
+    // same for every row.
+    let turning: Vec<Vec<f64>> = (0..runs)
+        .map(|k| {
+            (0..q)
+                .map(|j| {
+                    let w: Complex64 = (0..q)
+                        .map(|l| gram[(l, j)] * prop.omega[(k, l)])
+                        .sum::<Complex64>()
+                        / gram_inv[j];
+                    w.norm_sqr()
+                })
+                .collect()
+        })
+        .collect();
     for (i, (&row, &g)) in sel.rows.iter().zip(&sel.weights).enumerate() {
         let a = |j: usize| fit.w[(row, fit.planes[j])] * g;
         // The row's leverage in the span of all the columns, `[A A⁺]_ii`.
@@ -179,13 +196,7 @@ pub fn denoised(
             let turned: f64 = g
                 * g
                 * (0..runs)
-                    .map(|k| {
-                        let w: Complex64 = (0..q)
-                            .map(|l| gram[(l, j)] * prop.omega[(k, l)])
-                            .sum::<Complex64>()
-                            / gram_inv[j];
-                        cov[row][k].trace() * w.norm_sqr()
-                    })
+                    .map(|k| cov[row][k].trace() * turning[k][j])
                     .sum::<f64>();
             own_var[j] += 2.0 * perp2 * turned + (var * off).powi(2);
         }

@@ -88,12 +88,23 @@ fn benches(c: &mut Criterion) {
     c.bench_function("solve two planes, 4 sensors, 1 speed, stated noise", |b| {
         b.iter(|| solve(black_box(&small), &stated).unwrap())
     });
+    // Many speeds with stated noise: the path where `amplitude_95` conditions
+    // on all rows through the de-noised Gram (issue 12, method §8, session
+    // 24 amp24), which one speed never takes.
+    let speeds = job(3, 4, 10);
+    c.bench_function("solve 3 planes, 4 sensors, 10 speeds, stated noise", |b| {
+        b.iter(|| solve(black_box(&speeds), &stated).unwrap())
+    });
     let large = job(16, 32, 40);
     let mut group = c.benchmark_group("large");
     group.sample_size(20);
     group.bench_function("solve 16 planes, 32 sensors, 40 speeds", |b| {
         b.iter(|| solve(black_box(&large), &options).unwrap())
     });
+    group.bench_function(
+        "solve 16 planes, 32 sensors, 40 speeds, stated noise",
+        |b| b.iter(|| solve(black_box(&large), &stated).unwrap()),
+    );
     group.bench_function("validate 16 planes, 32 sensors, 40 speeds", |b| {
         b.iter(|| {
             fieldbal::balancing::validate::check(black_box(&large))

@@ -256,7 +256,7 @@ mod tests {
     /// What the paged lists rely on (their page and total are read in one
     /// `begin_read`): a write committed on another connection between two
     /// reads of one read transaction is in neither. The race probes of
-    /// `tests/api/pages.rs` show the lists use it; this shows it holds.
+    /// `tests/api/store/pages.rs` show the lists use it; this shows it holds.
     #[tokio::test]
     async fn a_read_transaction_sees_one_snapshot_while_another_connection_commits() {
         let dir = tempfile::tempdir().unwrap();

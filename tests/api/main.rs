@@ -1,10 +1,12 @@
-//! The HTTP API against the real server: bad requests and their error bodies,
-//! machines and their coefficient versions (numbers never reused under an
-//! id), the strings and timestamps stored alike on both engines
-//! (`stored_text`), the OpenAPI document, runs of a
-//! stored session, what a job and its runs are (`records`), a page and its
-//! total from one snapshot (`pages`), the `fieldbal serve` binary, service behaviour (request ids,
-//! body limits, time limits) and sessions. `scripts/test.sh` runs this whole
+//! The HTTP API against the real server, grouped by what it holds:
+//! `requests` (bad requests and their error bodies, texts, solve options,
+//! query parameters, the conditional and idempotent writes' headers),
+//! `store` (sessions, runs, what a job and its runs are, pages from one
+//! snapshot, strings alike on both engines, trim jobs), `machines` (their
+//! coefficient versions, ids never reused, their sessions), `contract` (the
+//! OpenAPI document and the contract's field names), `service` (the `fieldbal
+//! serve` binary, request ids, limits) and `commands` (the offline commands
+//! refuse what the service refuses). `scripts/test.sh` runs this whole
 //! binary a second time with the server on PostgreSQL.
 
 #[path = "../common/mod.rs"]
@@ -13,18 +15,11 @@ mod common;
 #[path = "../job/support.rs"]
 mod job_support;
 
-mod contract_fields;
-mod errors;
-mod machine_ids;
+mod support;
+
+mod commands;
+mod contract;
 mod machines;
-mod openapi;
-mod pages;
-mod records;
-mod review22;
-mod review23;
-mod runs;
-mod serve;
+mod requests;
 mod service;
-mod sessions;
-mod stored_text;
-mod trim_jobs;
+mod store;

@@ -3,6 +3,9 @@
 //! pool sessions into versions (never colliding), solve a new job from stored
 //! coefficients, and every error naming its field.
 
+mod ids;
+mod sessions_page;
+
 use crate::common;
 use crate::job_support;
 

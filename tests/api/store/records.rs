@@ -21,7 +21,7 @@ async fn run_purposes_and_a_trim_are_stored_and_given_back_unchanged() {
     let (_dir, server, client) = fresh_server().await;
     let mut session = example("pump-two-plane-exact.json")["session"].clone();
     // A trim naming a machine's coefficients is stored and given back as it
-    // is (solving it reads them: tests/api/trim_jobs.rs).
+    // is (solving it reads them: tests/api/store/trim_jobs.rs).
     let mut trimmed = session.clone();
     trimmed["trim"] = json!({"coefficients_from": {"machine": "PUMP-1", "version": 2}});
     let (status, headers, created) = post(&client, &server.url("/api/v1/sessions"), &trimmed).await;

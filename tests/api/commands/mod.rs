@@ -1,0 +1,3 @@
+//! The offline commands beside the service.
+
+mod refusals;

@@ -1,0 +1,5 @@
+//! The service itself: the `fieldbal serve` binary and its behaviour around
+//! the API (request ids, limits, time limits).
+
+mod behaviour;
+mod serve;

@@ -1,7 +1,7 @@
 //! End-to-end tests of the web form in Debian's headless Chromium, typed key
 //! by key: errors at their field, exports, the form, imported sessions, a
 //! whole job at the stand, what a new user met (`newuser`), a job reopened elsewhere and
-//! one typed from the keyboard alone (`reopened`), and bearer tokens. `harness/` starts and drives the
+//! one typed from the keyboard alone (`reopened`), bearer tokens, and the stand-alone free-decay and residual pages kept across a reload (`tools`). `harness/` starts and drives the
 //! browser (one at a time in this binary, see `harness::Browser::start`);
 //! `scenes/` holds the longer scenes the tests go through. Screenshots go to
 //! `target/screenshots/`.
@@ -20,3 +20,4 @@ mod newuser;
 mod reopened;
 mod said;
 mod token;
+mod tools;

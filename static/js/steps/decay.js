@@ -8,14 +8,20 @@ import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
 import { parseNumber, sig } from "../page/num.js";
 import { api } from "../job/api.js";
-
-// What was typed, kept while other steps are visited.
-const typed = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null };
+import { keepPage, keptPage, forgetPage } from "../job/keep.js";
 
 const LAWS = [
   ["viscous", "Viscous — damping force ∝ velocity: the amplitude decays exponentially (oil film, material)"],
   ["turbulent", "Turbulent — damping force ∝ velocity²: the amplitude decays as 1/(1 + λt) (air, fluid drag)"],
 ];
+
+const EMPTY = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null };
+
+// What was typed (and the answer to it), kept while other steps are visited
+// and across a reload (keep.js), until "Start over".
+const typed = keptPage("decay", EMPTY);
+if (!LAWS.some(([v]) => v === typed.damping)) typed.damping = EMPTY.damping;
+const keepTyped = () => keepPage("decay", typed);
 
 /**
  * The samples of pasted text, or `{ error }` naming the first bad one. A
@@ -86,8 +92,9 @@ export function renderDecay(root) {
     oninput: () => { typed.samples = samples.value; mark(samples, ""); },
   });
   samples.value = typed.samples;
-  const result = h("div", { class: "decay-out" }, typed.answer ? answerView(typed.answer) : null);
+  const result = h("div", { class: "decay-out" }, keptAnswer());
   const run = h("button", { type: "submit", class: "primary identify" }, "Identify");
+  const again = h("button", { type: "button", class: "start-over", onclick: () => startOver() }, "Start over");
   const form = h("form", { class: "decay-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); identify(); } },
     h("div", { class: "decay-fields" },
       h("label", {}, h("span", {}, "Samples (a column pasted from a spreadsheet, or separated by commas, spaces or tabs)"),
@@ -100,8 +107,11 @@ export function renderDecay(root) {
         h("p", { class: "hint law" }),
         h("label", {}, h("span", {}, "Offset (optional, samples' unit; empty: fitted)"),
           numberInput({ field: "offset", kind: "offset", value: typed.offset, required: false, label: "Offset, optional", size: 9, onValue: (v) => { typed.offset = v; } })),
-        run)),
+        h("div", { class: "actions decay-actions" }, run, again))),
   );
+  // Each field updates `typed` first (its own listener); the form hears it after.
+  form.addEventListener("input", keepTyped);
+  form.addEventListener("change", keepTyped);
   const explain = () => { $(".law", form).textContent = LAWS.find(([v]) => v === typed.damping)[1]; };
   explain();
 
@@ -121,6 +131,28 @@ export function renderDecay(root) {
     const body = { samples: parsed.values, dt_s: typed.dt_s, damping: typed.damping };
     if (typed.offset !== null) body.offset = typed.offset;
     await sendAndShow({ root, run, result, typed, send: () => api.identifyFreeDecay(body), view: answerView });
+    keepTyped();
+  }
+
+  /** The answer kept with the input; none if it cannot be drawn (kept by another version of the form). */
+  function keptAnswer() {
+    if (!typed.answer) return null;
+    try {
+      return answerView(typed.answer);
+    } catch (e) {
+      typed.answer = null;
+      return null;
+    }
+  }
+
+  /** Empty the page for another record, once the technician says so when something is typed. */
+  function startOver() {
+    const any = typed.samples.trim() !== "" || typed.dt_s !== null || typed.offset !== null || typed.answer;
+    if (any && !window.confirm("Empty this page: the samples, the sampling step, the offset and the answer? Cancel to keep them.")) return;
+    Object.assign(typed, EMPTY);
+    forgetPage("decay");
+    renderDecay(root);
+    $('[data-field="samples"]', root).focus();
   }
 
   replace(root,

@@ -9,15 +9,22 @@ import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
 import { parseNumber, fmt, fmtAngle } from "../page/num.js";
 import { api } from "../job/api.js";
+import { keepPage, keptPage, forgetPage } from "../job/keep.js";
 
-// What was typed, kept while other steps are visited.
-const typed = {
+const PHASES = [["lag", "lag (the analyser's default)"], ["lead", "lead"]];
+const DIRECTIONS = [["against_rotation", "against rotation"], ["with_rotation", "with rotation"]];
+
+const EMPTY = {
   plane: "", speed_rpm: null, journal_load_kg: null, mass_g: null, radius_mm: null,
   phase: "lag", angle_direction: "against_rotation", readings: "", answer: null,
 };
 
-const PHASES = [["lag", "lag (the analyser's default)"], ["lead", "lead"]];
-const DIRECTIONS = [["against_rotation", "against rotation"], ["with_rotation", "with rotation"]];
+// What was typed (and the answer to it), kept while other steps are visited
+// and across a reload (keep.js), until "Start over".
+const typed = keptPage("residual", EMPTY);
+if (!PHASES.some(([v]) => v === typed.phase)) typed.phase = EMPTY.phase;
+if (!DIRECTIONS.some(([v]) => v === typed.angle_direction)) typed.angle_direction = EMPTY.angle_direction;
+const keepTyped = () => keepPage("residual", typed);
 
 /**
  * The positions of pasted text, a line each: trial angle, amplitude and
@@ -95,8 +102,9 @@ export function renderResidual(root) {
     oninput: () => { typed.readings = readings.value; mark(readings, ""); },
   });
   readings.value = typed.readings;
-  const result = h("div", { class: "residual-out" }, typed.answer ? answerView(typed.answer) : null);
+  const result = h("div", { class: "residual-out" }, keptAnswer());
   const run = h("button", { type: "submit", class: "primary check-residual" }, "Check");
+  const again = h("button", { type: "button", class: "start-over", onclick: () => startOver() }, "Start over");
   const num = (field, kind, label, placeholder, key) => h("label", {}, h("span", {}, label),
     numberInput({ field, kind, value: typed[key], label, placeholder, size: 9, onValue: (v) => { typed[key] = v; } }));
   const form = h("form", { class: "decay-form residual-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); check(); } },
@@ -114,8 +122,11 @@ export function renderResidual(root) {
           selectInput({ field: "conventions.phase", value: typed.phase, choices: PHASES, label: "Phase convention", onValue: (v) => { typed.phase = v; } })),
         h("label", {}, h("span", {}, "Trial angles counted"),
           selectInput({ field: "conventions.angle_direction", value: typed.angle_direction, choices: DIRECTIONS, label: "Trial angle direction", onValue: (v) => { typed.angle_direction = v; } })),
-        run)),
+        h("div", { class: "actions decay-actions" }, run, again))),
   );
+  // Each field updates `typed` first (its own listener); the form hears it after.
+  form.addEventListener("input", keepTyped);
+  form.addEventListener("change", keepTyped);
 
   async function check() {
     clearMarks(root);
@@ -139,6 +150,28 @@ export function renderResidual(root) {
     };
     if (typed.plane) body.plane = typed.plane;
     await sendAndShow({ root, run, result, typed, send: () => api.residualUnbalance(body), view: answerView });
+    keepTyped();
+  }
+
+  /** The answer kept with the input; none if it cannot be drawn (kept by another version of the form). */
+  function keptAnswer() {
+    if (!typed.answer) return null;
+    try {
+      return answerView(typed.answer);
+    } catch (e) {
+      typed.answer = null;
+      return null;
+    }
+  }
+
+  /** Empty the page for another test, once the technician says so when something is typed. */
+  function startOver() {
+    const any = typed.readings.trim() !== "" || typed.plane !== "" || [typed.speed_rpm, typed.journal_load_kg, typed.mass_g, typed.radius_mm].some((v) => v !== null) || typed.answer;
+    if (any && !window.confirm("Empty this page: the readings, the plane, speed, load and trial weight, and the answer? Cancel to keep them.")) return;
+    Object.assign(typed, EMPTY);
+    forgetPage("residual");
+    renderResidual(root);
+    $('[data-field="readings"]', root).focus();
   }
 
   replace(root,

@@ -1,0 +1,107 @@
+//! The free-decay page keeps its samples, step, damping law and offset, and
+//! its answer, across a reload.
+
+use serde_json::json;
+
+use super::{
+    answer_text, press_and_wait, record_requests, reload, sent_to, start_over, start_over_accepted,
+    values,
+};
+use crate::harness::form::{choose, field, type_into};
+use crate::harness::job::shots;
+use crate::harness::stand::{post, Stand};
+use crate::harness::steps::{fits_a_tablet, js};
+
+const FIELDS: [&str; 4] = ["samples", "dt_s", "damping", "offset"];
+const ANSWER: &str = "#step-decay .decay-result";
+
+pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand) {
+    let b = &stand.browser;
+    let here = |name: &str| format!("#step-decay {}", field(name));
+    // 10 Hz, ζ 0.02, sampled every 5 ms: 200 samples.
+    let (f0, zeta, dt) = (10.0_f64, 0.02_f64, 0.005_f64);
+    let w0 = 2.0 * std::f64::consts::PI * f0;
+    let wd = w0 * (1.0 - zeta * zeta).sqrt();
+    let column: Vec<String> = (0..200)
+        .map(|k| {
+            let t = k as f64 * dt;
+            format!("{:.6}", (-zeta * w0 * t).exp() * (wd * t + 0.3).cos())
+        })
+        .collect();
+    let samples: Vec<f64> = column.iter().map(|s| s.parse().unwrap()).collect();
+    // Decimal commas, as a European spreadsheet copies a column.
+    let pasted = column.join("\n").replace('.', ",");
+
+    b.click("nav [data-step=\"decay\"]").await;
+    type_into(b, &here("samples"), &pasted).await;
+    type_into(b, &here("dt_s"), "0,005").await;
+    type_into(b, &here("offset"), "0,01").await;
+    // Not the default law: what is kept is what was chosen.
+    choose(b, &here("damping"), "turbulent").await;
+    press_and_wait(b, "decay", "button.identify", ".decay-result").await;
+    let answered = answer_text(b, ANSWER).await;
+    assert!(answered.contains("Initial decrement"), "{answered}");
+
+    reload(b, "decay").await;
+    let kept = values(b, "decay", &FIELDS).await;
+    assert_eq!(
+        kept[0], pasted,
+        "the samples pasted are kept across a reload"
+    );
+    let number = |s: &str| s.replace(',', ".").parse::<f64>().ok();
+    assert_eq!(number(&kept[1]), Some(0.005), "dt_s kept: {kept:?}");
+    assert_eq!(kept[2], "turbulent", "the damping law kept: {kept:?}");
+    assert_eq!(number(&kept[3]), Some(0.01), "the offset kept: {kept:?}");
+    assert_eq!(
+        answer_text(b, ANSWER).await,
+        answered,
+        "the answer shown before the reload is shown after it"
+    );
+
+    // Sent again after the reload: the same request as typed, answered as the service answers it.
+    record_requests(b).await;
+    press_and_wait(b, "decay", "button.identify", ".decay-result").await;
+    let sent = sent_to(b, "/identify/free-decay").await;
+    let want = json!({ "samples": samples, "dt_s": 0.005, "damping": "turbulent", "offset": 0.01 });
+    assert_eq!(sent, vec![want.clone()], "the request after a reload");
+    let said = post(stand, "/api/v1/identify/free-decay", want).await;
+    assert!(said["decrement"].is_number(), "{said}");
+    assert_eq!(answer_text(b, ANSWER).await, answered, "{said}");
+    let decrement = said["decrement"].as_f64().unwrap();
+    let shown = js(
+        b,
+        "return document.querySelector('#step-decay table.decay-answer tr.decrement td').textContent",
+    )
+    .await;
+    assert_eq!(shown, json!(format!("{}", sig4(decrement))), "{said}");
+
+    js(b, "window.scrollTo(0, 0); return true").await;
+    shots(b, "free-decay").await;
+    fits_a_tablet(b, "free decay").await;
+
+    // Start over: asked first; "no" keeps everything.
+    let asked = start_over(b, "decay").await;
+    assert!(asked.contains("samples"), "{asked}");
+    assert_eq!(values(b, "decay", &FIELDS).await, kept);
+    start_over_accepted(b, "decay").await;
+    let emptied = vec![
+        String::new(),
+        String::new(),
+        "viscous".into(),
+        String::new(),
+    ];
+    assert_eq!(values(b, "decay", &FIELDS).await, emptied);
+    assert_eq!(answer_text(b, ANSWER).await, "");
+    reload(b, "decay").await;
+    assert_eq!(
+        values(b, "decay", &FIELDS).await,
+        emptied,
+        "nothing comes back after starting over"
+    );
+    assert_eq!(answer_text(b, ANSWER).await, "");
+}
+
+/// `x` to 4 significant digits, shortest form (the page's `sig`).
+fn sig4(x: f64) -> f64 {
+    format!("{x:.3e}").parse().unwrap()
+}

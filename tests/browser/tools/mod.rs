@@ -1,0 +1,138 @@
+//! The stand-alone pages, free decay and residual check, as a technician at
+//! the stand uses them: what was typed there survives a reload of the page
+//! (it lived only in the page's module, while the job's steps keep their
+//! drafts in this browser's storage: a reload lost a pasted record) and is
+//! sent as it was typed; "Start over" asks first, then empties the page for
+//! good, a reload bringing nothing back. Both pages at 1280 and 768 wide
+//! (screenshots), and at 768 no target under 44 px and no sideways scroll.
+
+mod decay;
+mod residual;
+
+use serde_json::Value;
+
+use crate::harness::stand::Stand;
+use crate::harness::steps::js;
+use crate::harness::Browser;
+
+/// One browser for both pages (CI time); each gets a new server and a freshly
+/// loaded form (`Stand::renew`), so nothing is kept from the other.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_stand_alone_pages_keep_what_was_typed_across_a_reload() {
+    let mut stand = Stand::start().await;
+    decay::what_was_typed_survives_a_reload_and_is_sent_as_typed(&stand).await;
+    stand.renew().await;
+    residual::what_was_typed_survives_a_reload_and_is_sent_as_typed(&stand).await;
+    stand.stop().await;
+}
+
+/// Reload the page and wait until `step` is shown again (the address keeps it).
+async fn reload(b: &Browser, step: &str) {
+    b.client.refresh().await.expect("the page reloads");
+    b.wait_until(
+        &format!("the {step} page is back after the reload"),
+        &format!(
+            "const s = document.querySelector('#step-{step}'); return !!s && !s.hidden && !!s.querySelector('form')"
+        ),
+    )
+    .await;
+}
+
+/// Record the body of every request the page sends from now on (until it is reloaded).
+async fn record_requests(b: &Browser) {
+    js(
+        b,
+        "window.sentBodies = []; const f = window.fetch; \
+         window.fetch = (url, init) => { if (init && init.body) window.sentBodies.push({ url: String(url), body: JSON.parse(init.body) }); return f(url, init); }; \
+         return true",
+    )
+    .await;
+}
+
+/// The bodies the page sent to a URL ending in `path` since `record_requests`.
+async fn sent_to(b: &Browser, path: &str) -> Vec<Value> {
+    let got = js(
+        b,
+        &format!(
+            "return window.sentBodies.filter((x) => x.url.endsWith({})).map((x) => x.body)",
+            serde_json::to_string(path).unwrap()
+        ),
+    )
+    .await;
+    got.as_array().expect("a list").clone()
+}
+
+/// Press `button` in `#step-{step}` and wait until `result` (a selector) is
+/// one drawn after the press (the one shown before is marked first).
+async fn press_and_wait(b: &Browser, step: &str, button: &str, result: &str) {
+    let css = format!("#step-{step} {result}");
+    js(
+        b,
+        &format!(
+            "const r = document.querySelector({}); if (r) r.dataset.old = 'yes'; return true",
+            serde_json::to_string(&css).unwrap()
+        ),
+    )
+    .await;
+    b.click(&format!("#step-{step} {button}")).await;
+    b.wait_until(
+        "a new answer is shown",
+        &format!(
+            "const r = document.querySelector({}); return !!r && r.dataset.old !== 'yes'",
+            serde_json::to_string(&css).unwrap()
+        ),
+    )
+    .await;
+}
+
+/// The value of each field of `#step-{step}` named in `fields` (`data-field`).
+async fn values(b: &Browser, step: &str, fields: &[&str]) -> Vec<String> {
+    let got = js(
+        b,
+        &format!(
+            "return {}.map((f) => {{ const e = document.querySelector(`#step-{step} [data-field=\"${{f}}\"]`); return e ? e.value : null; }})",
+            serde_json::to_string(fields).unwrap()
+        ),
+    )
+    .await;
+    got.as_array()
+        .expect("a list")
+        .iter()
+        .map(|v| {
+            v.as_str()
+                .unwrap_or_else(|| panic!("a field of {fields:?} is missing: {got}"))
+                .to_string()
+        })
+        .collect()
+}
+
+/// The text the page shows as its answer, or "" when it shows none.
+async fn answer_text(b: &Browser, css: &str) -> String {
+    let got = js(
+        b,
+        &format!(
+            "const r = document.querySelector({}); return r ? r.innerText : ''",
+            serde_json::to_string(css).unwrap()
+        ),
+    )
+    .await;
+    got.as_str().unwrap_or_default().to_string()
+}
+
+/// "Start over" asks first: dismissed, the page keeps what was typed (checked
+/// by the caller); accepted, every field is empty or back at its default, no
+/// answer is shown, and a reload brings nothing back.
+async fn start_over(b: &Browser, step: &str) -> String {
+    let button = format!("#step-{step} button.start-over");
+    b.click(&button).await;
+    let asked = crate::newuser::confirmation(b).await;
+    b.client.dismiss_alert().await.unwrap();
+    asked
+}
+
+/// Press "Start over" and accept its question.
+async fn start_over_accepted(b: &Browser, step: &str) {
+    b.click(&format!("#step-{step} button.start-over")).await;
+    crate::newuser::confirmation(b).await;
+    b.client.accept_alert().await.unwrap();
+}

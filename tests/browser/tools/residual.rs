@@ -1,0 +1,174 @@
+//! The residual-check page keeps its readings, plane, speed, load, trial
+//! weight and conventions, and its answer, across a reload.
+
+use serde_json::{json, Value};
+
+use super::{
+    answer_text, press_and_wait, record_requests, reload, sent_to, start_over, start_over_accepted,
+    values,
+};
+use crate::harness::form::{choose, field, type_into};
+use crate::harness::job::shots;
+use crate::harness::stand::{post, Stand};
+use crate::harness::steps::{fits_a_tablet, js};
+
+const FIELDS: [&str; 8] = [
+    "readings",
+    "plane",
+    "speed_rpm",
+    "journal_load_kg",
+    "trial.mass_g",
+    "trial.radius_mm",
+    "conventions.phase",
+    "conventions.angle_direction",
+];
+const ANSWER: &str = "#step-residual .residual-result";
+
+/// Paste `text` into the readings as the browser does (a spreadsheet's tabs
+/// cannot be typed: a typed Tab moves the focus): the value, then `input`.
+async fn paste(b: &crate::harness::Browser, text: &str) {
+    js(
+        b,
+        &format!(
+            "const t = document.querySelector('#step-residual textarea[data-field=\"readings\"]'); t.value = {}; t.dispatchEvent(new Event('input', {{ bubbles: true }})); return null",
+            serde_json::to_string(text).unwrap()
+        ),
+    )
+    .await;
+}
+
+pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand) {
+    let b = &stand.browser;
+    let here = |name: &str| format!("#step-residual {}", field(name));
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/residual/left-plane-12-positions.json"
+    );
+    let mut request: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    // Not the defaults: what is kept is what was chosen.
+    request["conventions"] = json!({ "phase": "lead", "angle_direction": "with_rotation" });
+    let pasted: Vec<String> = request["readings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| format!("{}\t{}\t{}", r["angle_deg"], r["amplitude"], r["phase_deg"]))
+        .collect();
+    let pasted = pasted.join("\n");
+
+    b.click("nav [data-step=\"residual\"]").await;
+    paste(b, &pasted).await;
+    type_into(b, &here("plane"), request["plane"].as_str().unwrap()).await;
+    type_into(b, &here("speed_rpm"), &request["speed_rpm"].to_string()).await;
+    let load = request["journal_load_kg"].to_string().replace('.', ",");
+    type_into(b, &here("journal_load_kg"), &load).await;
+    let mass = request["trial"]["mass_g"].to_string();
+    type_into(b, &here("trial.mass_g"), &mass).await;
+    let radius = request["trial"]["radius_mm"].to_string();
+    type_into(b, &here("trial.radius_mm"), &radius).await;
+    choose(b, &here("conventions.phase"), "lead").await;
+    choose(b, &here("conventions.angle_direction"), "with_rotation").await;
+    press_and_wait(b, "residual", "button.check-residual", ".residual-result").await;
+    let answered = answer_text(b, ANSWER).await;
+    assert!(answered.contains("with rotation"), "{answered}");
+
+    reload(b, "residual").await;
+    let kept = values(b, "residual", &FIELDS).await;
+    assert_eq!(
+        kept[0], pasted,
+        "the readings pasted are kept across a reload"
+    );
+    let number = |s: &str| s.replace(',', ".").parse::<f64>().ok();
+    assert_eq!(kept[1], request["plane"].as_str().unwrap(), "{kept:?}");
+    for (k, want) in [
+        (2, &request["speed_rpm"]),
+        (3, &request["journal_load_kg"]),
+        (4, &request["trial"]["mass_g"]),
+        (5, &request["trial"]["radius_mm"]),
+    ] {
+        assert_eq!(
+            number(&kept[k]),
+            want.as_f64(),
+            "{} kept: {kept:?}",
+            FIELDS[k]
+        );
+    }
+    assert_eq!(kept[6..], ["lead", "with_rotation"], "{kept:?}");
+    assert_eq!(
+        answer_text(b, ANSWER).await,
+        answered,
+        "the answer shown before the reload is shown after it"
+    );
+
+    // Sent again after the reload: the same request, answered as the service answers it.
+    record_requests(b).await;
+    press_and_wait(b, "residual", "button.check-residual", ".residual-result").await;
+    let sent = sent_to(b, "/residual-unbalance").await;
+    assert_eq!(sent.len(), 1, "{sent:?}");
+    let number_at = |v: &Value, k: &str| v[k].as_f64();
+    let got = &sent[0];
+    assert_eq!(got["plane"], request["plane"], "{got}");
+    for k in ["speed_rpm", "journal_load_kg"] {
+        assert_eq!(number_at(got, k), number_at(&request, k), "{k}: {got}");
+    }
+    for k in ["mass_g", "radius_mm"] {
+        assert_eq!(
+            number_at(&got["trial"], k),
+            number_at(&request["trial"], k),
+            "trial.{k}: {got}"
+        );
+    }
+    assert_eq!(got["conventions"], request["conventions"], "{got}");
+    assert_eq!(
+        positions(&got["readings"]),
+        positions(&request["readings"]),
+        "the readings sent after a reload"
+    );
+    assert_eq!(answer_text(b, ANSWER).await, answered);
+    let said = post(stand, "/api/v1/residual-unbalance", request.clone()).await;
+    let residual = said["residual_unbalance_gmm"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{said}"));
+    assert!(
+        answered.contains(&format!("{residual:.0} g·mm")),
+        "{answered} for {said}"
+    );
+
+    js(b, "window.scrollTo(0, 0); return true").await;
+    shots(b, "residual-check").await;
+    fits_a_tablet(b, "residual check").await;
+
+    // Start over: asked first; "no" keeps everything.
+    let asked = start_over(b, "residual").await;
+    assert!(asked.contains("readings"), "{asked}");
+    assert_eq!(values(b, "residual", &FIELDS).await, kept);
+    start_over_accepted(b, "residual").await;
+    let emptied: Vec<String> = ["", "", "", "", "", "", "lag", "against_rotation"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    assert_eq!(values(b, "residual", &FIELDS).await, emptied);
+    assert_eq!(answer_text(b, ANSWER).await, "");
+    reload(b, "residual").await;
+    assert_eq!(
+        values(b, "residual", &FIELDS).await,
+        emptied,
+        "nothing comes back after starting over"
+    );
+    assert_eq!(answer_text(b, ANSWER).await, "");
+}
+
+/// Each reading's angle, amplitude and phase.
+fn positions(readings: &Value) -> Vec<[Option<f64>; 3]> {
+    readings
+        .as_array()
+        .expect("readings")
+        .iter()
+        .map(|r| {
+            [
+                r["angle_deg"].as_f64(),
+                r["amplitude"].as_f64(),
+                r["phase_deg"].as_f64(),
+            ]
+        })
+        .collect()
+}

@@ -163,17 +163,39 @@ export function warningsBox(solution) {
   );
 }
 
+/**
+ * Ask the service for a solve. The step counts the solves it asks for
+ * (`data-solves`) and says which one has come back, answered or refused
+ * (`data-settled`): while a solve is out the answer before it is still
+ * shown, and the step is busy (`aria-busy`), its Solve button off, so that a
+ * second press does not store a second solution.
+ */
 async function solve(root, rerender) {
+  const mine = Number(root.dataset.solves || 0) + 1;
+  root.dataset.solves = String(mine);
+  root.setAttribute("aria-busy", "true");
+  const button = root.querySelector("button.solve");
+  if (button) button.disabled = true;
+  const settled = () => {
+    root.dataset.settled = String(mine);
+    root.removeAttribute("aria-busy");
+  };
   banner(root, "error", "");
   try {
     const stored = await api.solve(state.id, solveOptions());
     state.solution = stored && stored.solution ? stored.solution : stored;
     state.solutionDate = (stored && stored.created_at) || null;
   } catch (err) {
+    settled();
+    if (button) {
+      button.disabled = false;
+      button.focus();
+    }
     if (!markServerError(err)) banner(root, "error", err.message);
     return;
   }
   changed();
+  settled();
   rerender();
   // The answer is drawn afresh: keep the technician's place (the focus was
   // left on the page's body), Tab goes on into the answer.
@@ -188,7 +210,7 @@ export function renderSolve(root, checkRun) {
     h("h2", {}, "3 · Corrections"),
     optionsPanel(),
     h("div", { class: "actions solve-actions" },
-      h("button", { type: "button", class: "primary solve", disabled: state.id === null, onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve")),
+      h("button", { type: "button", class: "primary solve", disabled: state.id === null || root.getAttribute("aria-busy") === "true", onclick: () => solve(root, rerender) }, sol ? "Solve again" : "Solve")),
     sol ? [
       state.solutionDate ? h("p", { class: "hint solved-at" }, `Solved ${storedAt(state.solutionDate)}`) : "",
       answerParts(sol, checkRun, rerender),

@@ -296,39 +296,49 @@ pub async fn store(b: &Browser) {
     }
 }
 
-/// The corrections as the page shows them: (plane, mass in g, angle in degrees).
+/// The corrections as the page shows them: (plane, mass in g, angle in
+/// degrees), read once the answer of the last solve asked for is drawn. The
+/// corrections step counts the solves it asks for (`data-solves`) and says
+/// which has come back (`data-settled`); while a re-solve is out the page
+/// still shows the answer before it, which waiting for any row would read.
+/// A refused solve fails here with the page's message.
 pub async fn corrections_on_page(b: &Browser) -> Vec<(String, f64, f64)> {
-    b.wait_for("#step-solve table.corrections tbody tr").await;
-    let mut out = Vec::new();
-    // Not the rows of warnings under a plane's correction.
-    for row in b
+    b.wait_until(
+        "the answer of the last solve is shown, or refused",
+        "const s = document.querySelector('#step-solve'); \
+         return (s.dataset.solves || '0') === (s.dataset.settled || '0') && \
+           (!!s.querySelector('table.corrections tbody tr') || !!s.querySelector('.banner.error:not([hidden])'))",
+    )
+    .await;
+    // Read in one script: the step drawn again between two reads would leave stale rows.
+    let got = b
         .client
-        .find_all(Locator::Css(
-            "#step-solve table.corrections tbody tr:not(.plane-warning)",
-        ))
+        .execute(
+            "const s = document.querySelector('#step-solve'); \
+             const refused = s.querySelector('.banner.error:not([hidden])'); \
+             if (refused) return { refused: refused.textContent }; \
+             return { rows: [...s.querySelectorAll('table.corrections tbody tr:not(.plane-warning)')] \
+               .map((r) => ['.corr-plane', '.corr-mass', '.corr-angle'].map((c) => r.querySelector(c).textContent)) }",
+            vec![],
+        )
         .await
-        .expect("rows")
-    {
-        let text = |css: &'static str| {
-            let row = row.clone();
-            async move {
-                row.find(Locator::Css(css))
-                    .await
-                    .expect(css)
-                    .text()
-                    .await
-                    .expect("text")
-            }
-        };
-        let plane = text(".corr-plane").await;
-        let mass = text(".corr-mass").await;
-        let angle = text(".corr-angle").await;
-        let number = |s: &str| -> f64 {
-            s.trim_end_matches(|c: char| !c.is_ascii_digit())
-                .parse()
-                .unwrap_or_else(|_| panic!("not a number on the page: {s:?}"))
-        };
-        out.push((plane, number(&mass), number(&angle)));
+        .expect("the corrections read");
+    if let Some(refused) = got.get("refused") {
+        panic!("the solve was refused: {refused}");
     }
-    out
+    let number = |s: &str| -> f64 {
+        s.trim_end_matches(|c: char| !c.is_ascii_digit())
+            .parse()
+            .unwrap_or_else(|_| panic!("not a number on the page: {s:?}"))
+    };
+    // Not the rows of warnings under a plane's correction (left out above).
+    got["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|r| {
+            let cell = |k: usize| r[k].as_str().expect("a cell's text").to_string();
+            (cell(0), number(&cell(1)), number(&cell(2)))
+        })
+        .collect()
 }

@@ -2,12 +2,15 @@
 //! reads the answer of the last solve asked for, not the one before it that
 //! the page still shows while the new one is out (it waited for any row of
 //! corrections, so a test after a re-solve could pass on the old answer).
+//! The report's kit weights to fit are in grams to 0.1 g, as the answer
+//! page and the report's other tables give them (it gave "10.00").
 
 use serde_json::{json, Value};
 
 use crate::harness::form::{corrections_on_page, field, type_into};
 use crate::harness::stand::{example_session, open_at_solve, post, Stand};
 use crate::harness::steps::js;
+use crate::scenes::kit_support::fmt;
 
 /// Store `session` and open it at its corrections step in the stand's browser.
 async fn opened(stand: &Stand, session: &Value) -> String {
@@ -69,6 +72,72 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
         assert!(
             (mass - m).abs() <= 0.051 && d.min(360.0 - d) <= 0.051,
             "{p}: {mass} g at {angle}° read, the limited answer is {m} g at {a}° (the first answer: {first:?})"
+        );
+    }
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_reports_kit_weights_are_in_grams_to_a_tenth() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for p in session["planes"].as_array_mut().unwrap() {
+        p["positions"] = json!(12);
+        p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
+    }
+    opened(&stand, &session).await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .plane-fig .fit-words").await;
+    let service = post(
+        &stand,
+        "/api/v1/solve",
+        json!({ "session": session, "options": { "discrete": true } }),
+    )
+    .await;
+    let fit = service["fit"]
+        .as_array()
+        .unwrap_or_else(|| panic!("the service fits the kits: {service}"));
+    // [plane, place, angle, mass] a row, as the report's table has them.
+    let mut want: Vec<[String; 4]> = Vec::new();
+    for p in fit {
+        let plane = p["plane"].as_str().unwrap().to_string();
+        if p["weights"].as_array().unwrap().is_empty() {
+            want.push([plane.clone(), "none".into(), "–".into(), "–".into()]);
+        }
+        for (i, w) in p["weights"].as_array().unwrap().iter().enumerate() {
+            want.push([
+                if i == 0 { plane.clone() } else { String::new() },
+                w["place"].to_string(),
+                fmt(w["angle_deg"].as_f64().unwrap(), 1),
+                fmt(w["mass_g"].as_f64().unwrap(), 1),
+            ]);
+        }
+    }
+    b.click("nav [data-step=\"report\"]").await;
+    b.wait_for("#step-report .report-fit table tbody tr").await;
+    let rows: Vec<[String; 4]> = serde_json::from_value(
+        js(
+            b,
+            "return [...document.querySelectorAll('#step-report .report-fit table tbody tr')].map((r) => [...r.cells].map((c) => c.textContent))",
+        )
+        .await,
+    )
+    .expect("rows of four cells");
+    assert_eq!(rows, want, "the report's weights to fit, in g to 0.1 g");
+    // The same figures as the answer page's words for each plane.
+    b.click("nav [data-step=\"solve\"]").await;
+    let words = js(
+        b,
+        "return [...document.querySelectorAll('#step-solve .plane-fig .fit-words li')].map((e) => e.textContent).join('\\n')",
+    )
+    .await;
+    let words = words.as_str().unwrap();
+    for row in &want {
+        assert!(
+            words.contains(&format!("{} g", row[3])),
+            "{} g is not said on the answer page: {words}",
+            row[3]
         );
     }
     stand.stop().await;

@@ -1,5 +1,5 @@
 //! End-to-end tests of the web form in Debian's headless Chromium, typed key
-//! by key: the corrections read after a re-solve (`answers`), errors at their field, exports, the form, imported sessions, a
+//! by key: the answer as read (`answers`), errors at their field, exports, the form, imported sessions, a
 //! whole job at the stand, what a new user met (`newuser`), a job reopened elsewhere and
 //! one typed from the keyboard alone (`reopened`), bearer tokens, and the stand-alone free-decay and residual pages kept across a reload (`tools`). `harness/` starts and drives the
 //! browser (one at a time in this binary, see `harness::Browser::start`);

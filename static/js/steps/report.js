@@ -12,7 +12,8 @@ import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox,
 import { verdict, trimWords, runChecks, planePictures, doubts } from "../answer/answer.js";
 import { plotsSection } from "../plots/plots.js";
 
-// The kit weights to fit, when the solution has a discrete fit (`fit`).
+// The kit weights to fit, when the solution has a discrete fit (`fit`): grams
+// to 0.1 g as every other table of weights (it gave 10.00 g).
 function fitTable(sol) {
   if (!sol.fit) return "";
   const optimal = sol.fit_summary && sol.fit_summary.optimal;
@@ -23,7 +24,7 @@ function fitTable(sol) {
     h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, `Angle, ° (${angleWords(sol.conventions || state.setup.conventions)})`), h("th", {}, "Mass, g"))),
       h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
         h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
-          h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 2) : "–")))))),
+          h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 1) : "–")))))),
     sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}${u}, max ${fmt(sol.fit_summary.max_after, 2)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
 }
 

@@ -20,6 +20,14 @@ export function parseNumber(text) {
   return { value };
 }
 
+/**
+ * A heading copied over a pasted column ("Amplitude, mm/s", "Angle  Phase"):
+ * a line that starts with a letter or a quote, which no number does.
+ */
+export function isHeading(line) {
+  return /^["'A-Za-z\u00C0-\u024F]/.test(String(line).trim());
+}
+
 /** Rules for each kind of numeric field: the check and its message. */
 export const RULES = {
   amplitude: { test: (x) => x >= 0 && x < 1e6, message: (x) => (x < 0 ? "amplitude must be 0 or more" : "amplitude must be less than 1000000 (check the unit)") },

@@ -6,7 +6,7 @@
 
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
-import { parseNumber, sig } from "../page/num.js";
+import { parseNumber, sig, isHeading } from "../page/num.js";
 import { api } from "../job/api.js";
 import { keepPage, keptPage, forgetPage } from "../job/keep.js";
 
@@ -27,13 +27,29 @@ const keepTyped = () => keepPage("decay", typed);
  * The samples of pasted text, or `{ error }` naming the first bad one. A
  * column (one a line) or a row separated by tabs, spaces or ";" takes a
  * decimal comma as the runs grid does (2,5); text with no such separators,
- * or with ", " between numbers, is split at its commas.
+ * or with ", " between numbers, is split at its commas. A heading over the
+ * column is passed over. A table of columns is refused: a time column
+ * copied beside the samples was read into them, times and samples
+ * alternating, and fitted as a record.
  */
 export function parseSamples(text) {
   const t = String(text || "").trim();
   if (t === "") return { error: "paste the samples, one a line or separated by commas, spaces or tabs" };
-  const commaSeparated = !/[\s;]/.test(t) || /,\s/.test(t);
-  const tokens = t.split(commaSeparated ? /[\s,;]+/ : /[\s;]+/).filter((x) => x !== "");
+  const lines = t.split(/\r?\n/).map((l, k) => ({ k: k + 1, text: l.trim() })).filter((l) => l.text !== "");
+  if (lines.length > 1 && isHeading(lines[0].text)) lines.shift();
+  // Told from the numbers alone: a heading's "Amplitude, mm/s" is no comma list.
+  const body = lines.map((l) => l.text).join("\n");
+  const commaSeparated = !/[\s;]/.test(body) || /,\s/.test(body);
+  const split = (line) => line.split(commaSeparated ? /[\s,;]+/ : /[\s;]+/).filter((x) => x !== "");
+  // A table of 2 to 4 columns, the same number on every line (a row wrapped
+  // over lines, many numbers a line, is read in order as before).
+  const widths = new Set(lines.map((l) => split(l.text).length));
+  const n = lines.length > 1 && widths.size === 1 ? [...widths][0] : 1;
+  if (n >= 2 && n <= 4) {
+    return { error: `${n} columns pasted (line ${lines[0].k}: ${lines[0].text}): paste the samples' column alone (a time column is not needed: its step is the sampling step dt_s)` };
+  }
+  const tokens = lines.flatMap((l) => split(l.text));
+  if (!tokens.length) return { error: "paste the samples, one a line or separated by commas, spaces or tabs" };
   const values = [];
   for (const [k, token] of tokens.entries()) {
     const r = parseNumber(token);
@@ -76,7 +92,10 @@ function answerView(a) {
   return h("div", { class: "decay-result", role: "status" },
     h("h3", {}, "Answer"),
     answerTable(a),
-    h("p", { class: "hint decay-pm" }, "± is the 95 % half-width of the figure, from the fit and the samples' scatter about it."),
+    // Said only where a figure has one (a turbulent fit gives none).
+    Number.isFinite(a.frequency_resolution_hz) || Number.isFinite(a.damping_ratio_resolution)
+      ? h("p", { class: "hint decay-pm" }, "± is the 95 % half-width of the figure, from the fit and the samples' scatter about it.")
+      : null,
     warnings.length
       ? h("div", { class: "warnings decay-warnings", role: "alert" },
         h("ul", {}, warnings.map((w) => h("li", { class: String(w.code || "").replace(/_/g, "-") }, `⚠ ${w.message || w.code}`))))

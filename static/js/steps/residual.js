@@ -7,7 +7,7 @@
 
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
-import { parseNumber, fmt, fmtAngle } from "../page/num.js";
+import { parseNumber, fmt, fmtAngle, isHeading } from "../page/num.js";
 import { api } from "../job/api.js";
 import { keepPage, keptPage, forgetPage } from "../job/keep.js";
 
@@ -29,22 +29,25 @@ const keepTyped = () => keepPage("residual", typed);
 /**
  * The positions of pasted text, a line each: trial angle, amplitude and
  * optionally phase, separated by tabs, spaces or ";" (decimal commas as in
- * the runs grid), or by ", " between numbers. `{ readings }` or `{ error }`
- * naming the line.
+ * the runs grid), or by ", " between numbers; a degree sign after an angle
+ * or phase (30°) as a spreadsheet formats it, and a heading line over the
+ * columns ("Angle  Amplitude  Phase"), are passed over. `{ readings }` or
+ * `{ error }` naming the line.
  */
 export function parsePositions(text) {
-  const lines = String(text || "").split(/\r?\n/).map((l) => l.trim()).filter((l) => l !== "");
+  const lines = String(text || "").split(/\r?\n/).map((l, k) => ({ k: k + 1, line: l.trim() })).filter((l) => l.line !== "");
+  if (lines.length && isHeading(lines[0].line)) lines.shift();
   if (!lines.length) return { error: "paste a line per trial position: angle, amplitude and (optionally) phase" };
   const readings = [];
-  for (const [k, line] of lines.entries()) {
+  for (const { k, line } of lines) {
     const tokens = line.split(/[\s;]+|,\s+/).filter((x) => x !== "");
     if (tokens.length < 2 || tokens.length > 3) {
-      return { error: `line ${k + 1} (${line}): angle and amplitude, then the phase if measured` };
+      return { error: `line ${k} (${line}): angle and amplitude, then the phase if measured` };
     }
     const values = [];
-    for (const token of tokens) {
-      const r = parseNumber(token);
-      if (r.error) return { error: `line ${k + 1} (${token}): ${r.error}` };
+    for (const [i, token] of tokens.entries()) {
+      const r = parseNumber(i === 1 ? token : token.replace(/\s*°$/, ""));
+      if (r.error) return { error: `line ${k} (${token}): ${r.error}` };
       values.push(r.value);
     }
     const reading = { angle_deg: values[0], amplitude: values[1] };

@@ -5,6 +5,11 @@
 //! sent as it was typed; "Start over" asks first, then empties the page for
 //! good, a reload bringing nothing back. Both pages at 1280 and 768 wide
 //! (screenshots), and at 768 no target under 44 px and no sideways scroll.
+//! What a spreadsheet copies is read as meant: a heading over the column is
+//! passed over (it was refused as "not a number"), degree signs after the
+//! residual check's angles too, and a time column copied beside the decay's
+//! samples is refused at the field (it was read into the samples, times
+//! and samples alternating, and fitted).
 
 mod decay;
 mod residual;
@@ -24,6 +29,55 @@ async fn the_stand_alone_pages_keep_what_was_typed_across_a_reload() {
     stand.renew().await;
     residual::what_was_typed_survives_a_reload_and_is_sent_as_typed(&stand).await;
     stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn pasted_columns_are_read_as_meant() {
+    let mut stand = Stand::start().await;
+    decay::a_heading_is_passed_over_and_a_time_column_refused(&stand).await;
+    stand.renew().await;
+    residual::a_heading_and_degree_signs_are_passed_over(&stand).await;
+    stand.stop().await;
+}
+
+/// Paste `text` into the textarea `css` as the browser does (a spreadsheet's
+/// tabs cannot be typed: a typed Tab moves the focus): the value, then `input`.
+async fn paste(b: &Browser, css: &str, text: &str) {
+    js(
+        b,
+        &format!(
+            "const t = document.querySelector({}); t.value = {}; t.dispatchEvent(new Event('input', {{ bubbles: true }})); return null",
+            serde_json::to_string(css).unwrap(),
+            serde_json::to_string(text).unwrap()
+        ),
+    )
+    .await;
+}
+
+/// What `function` of the page's module `module` (under /static/js/) gives for each of `inputs`.
+async fn parsed(b: &Browser, module: &str, function: &str, inputs: &[&str]) -> Vec<Value> {
+    let got = crate::harness::steps::js_async(
+        b,
+        &format!(
+            "const [done] = arguments; import('/static/js/{module}').then((m) => done({}.map((t) => m.{function}(t))));",
+            serde_json::to_string(inputs).unwrap()
+        ),
+    )
+    .await;
+    got.as_array().expect("a list").clone()
+}
+
+/// The message at the field `css` (empty when it is not marked).
+async fn message_at(b: &Browser, css: &str) -> String {
+    let got = js(
+        b,
+        &format!(
+            "const f = document.querySelector({}).closest('.field'); return f.classList.contains('bad') ? f.querySelector('.msg').textContent : ''",
+            serde_json::to_string(css).unwrap()
+        ),
+    )
+    .await;
+    got.as_str().unwrap_or_default().to_string()
 }
 
 /// Reload the page and wait until `step` is shown again (the address keeps it).

@@ -4,8 +4,8 @@
 use serde_json::{json, Value};
 
 use super::{
-    answer_text, press_and_wait, record_requests, reload, sent_to, start_over, start_over_accepted,
-    values,
+    answer_text, parsed, press_and_wait, record_requests, reload, sent_to, start_over,
+    start_over_accepted, values,
 };
 use crate::harness::form::{choose, field, type_into};
 use crate::harness::job::shots;
@@ -24,27 +24,24 @@ const FIELDS: [&str; 8] = [
 ];
 const ANSWER: &str = "#step-residual .residual-result";
 
-/// Paste `text` into the readings as the browser does (a spreadsheet's tabs
-/// cannot be typed: a typed Tab moves the focus): the value, then `input`.
+/// Paste `text` into the readings.
 async fn paste(b: &crate::harness::Browser, text: &str) {
-    js(
-        b,
-        &format!(
-            "const t = document.querySelector('#step-residual textarea[data-field=\"readings\"]'); t.value = {}; t.dispatchEvent(new Event('input', {{ bubbles: true }})); return null",
-            serde_json::to_string(text).unwrap()
-        ),
-    )
-    .await;
+    super::paste(b, "#step-residual textarea[data-field=\"readings\"]", text).await;
+}
+
+/// The request of tests/data/residual: twelve positions of plane "left".
+fn twelve_positions() -> Value {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/residual/left-plane-12-positions.json"
+    );
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
 pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand) {
     let b = &stand.browser;
     let here = |name: &str| format!("#step-residual {}", field(name));
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/residual/left-plane-12-positions.json"
-    );
-    let mut request: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let mut request = twelve_positions();
     // Not the defaults: what is kept is what was chosen.
     request["conventions"] = json!({ "phase": "lead", "angle_direction": "with_rotation" });
     let pasted: Vec<String> = request["readings"]
@@ -171,4 +168,71 @@ fn positions(readings: &Value) -> Vec<[Option<f64>; 3]> {
             ]
         })
         .collect()
+}
+
+pub async fn a_heading_and_degree_signs_are_passed_over(stand: &Stand) {
+    let b = &stand.browser;
+    let here = |name: &str| format!("#step-residual {}", field(name));
+    b.click("nav [data-step=\"residual\"]").await;
+    let got = parsed(
+        b,
+        "steps/residual.js",
+        "parsePositions",
+        &[
+            "Angle\tAmplitude\tPhase\n0°\t2.453\t335.7°\n30°\t2,59\t356.3°",
+            "0 2.453 335.7\n30 2.59 356.3",
+        ],
+    )
+    .await;
+    assert_eq!(got[0], got[1], "{got:?}");
+    assert_eq!(
+        got[1],
+        json!({ "readings": [
+            { "angle_deg": 0, "amplitude": 2.453, "phase_deg": 335.7 },
+            { "angle_deg": 30, "amplitude": 2.59, "phase_deg": 356.3 },
+        ] })
+    );
+
+    // Through the page: the twelve positions under a heading, angles and phases with their sign.
+    let request = twelve_positions();
+    let lines: Vec<String> = request["readings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            format!(
+                "{}°\t{}\t{}°",
+                r["angle_deg"], r["amplitude"], r["phase_deg"]
+            )
+        })
+        .collect();
+    paste(
+        b,
+        &format!("Trial angle\tAmplitude, µm\tPhase\n{}", lines.join("\n")),
+    )
+    .await;
+    type_into(b, &here("speed_rpm"), &request["speed_rpm"].to_string()).await;
+    let load = request["journal_load_kg"].to_string();
+    type_into(b, &here("journal_load_kg"), &load).await;
+    let mass = request["trial"]["mass_g"].to_string();
+    type_into(b, &here("trial.mass_g"), &mass).await;
+    let radius = request["trial"]["radius_mm"].to_string();
+    type_into(b, &here("trial.radius_mm"), &radius).await;
+    record_requests(b).await;
+    press_and_wait(b, "residual", "button.check-residual", ".residual-result").await;
+    let sent = sent_to(b, "/residual-unbalance").await;
+    assert_eq!(sent.len(), 1, "{sent:?}");
+    assert_eq!(
+        positions(&sent[0]["readings"]),
+        positions(&request["readings"])
+    );
+    let said = post(stand, "/api/v1/residual-unbalance", request.clone()).await;
+    let residual = said["residual_unbalance_gmm"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{said}"));
+    let shown = answer_text(b, ANSWER).await;
+    assert!(
+        shown.contains(&format!("{residual:.0} g·mm")),
+        "{shown} for {said}"
+    );
 }

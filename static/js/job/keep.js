@@ -1,9 +1,7 @@
 // Work not yet stored on the service, kept in this browser's local storage so
 // that a reload (or a closed tab) loses nothing: the set-up before the zero run
 // is stored, the run being typed, the report's reason and signer, and the
-// step shown. Cleared piece by piece as the service stores it. The stand-alone
-// pages (free decay, residual check) keep what is typed there in slots of
-// their own (keepPage).
+// step shown. Cleared piece by piece as the service stores it.
 
 import { state } from "./state.js";
 
@@ -61,17 +59,12 @@ export function forget() {
   }
 }
 
-/**
- * A stand-alone page's typed input (the free decay, the residual check), in a
- * slot of its own beside the job's: those pages store nothing on the service,
- * and a reload lost what was pasted there. Kept at every keystroke (`keepPage`),
- * read back over the page's `defaults` (`keptPage`: only the fields it has,
- * each of the default's type, or null), forgotten when the technician starts
- * the page over (`forgetPage`).
- */
+// A stand-alone page's input (free decay, residual check) in a slot of its
+// own, null to forget it; read back over the page's defaults, by type.
 export function keepPage(name, typed) {
   try {
-    localStorage.setItem(`${KEY}.${name}`, JSON.stringify(typed));
+    if (typed) localStorage.setItem(`${KEY}.${name}`, JSON.stringify(typed));
+    else localStorage.removeItem(`${KEY}.${name}`);
   } catch (e) {
     // Storage refused or full: the input lasts for this page only.
   }
@@ -80,24 +73,15 @@ export function keepPage(name, typed) {
 export function keptPage(name, defaults) {
   const out = { ...defaults };
   try {
-    const saved = JSON.parse(localStorage.getItem(`${KEY}.${name}`) || "null");
-    if (!saved || typeof saved !== "object") return out;
+    const saved = JSON.parse(localStorage.getItem(`${KEY}.${name}`)) || {};
     for (const [k, d] of Object.entries(defaults)) {
       const v = saved[k];
       if (v === null || (v !== undefined && (d === null || typeof v === typeof d))) out[k] = v;
     }
   } catch (e) {
-    // Nothing readable kept: the page starts empty.
+    // Nothing readable kept.
   }
   return out;
-}
-
-export function forgetPage(name) {
-  try {
-    localStorage.removeItem(`${KEY}.${name}`);
-  } catch (e) {
-    // Nothing kept.
-  }
 }
 
 // Every keystroke in the form is kept (the inputs update the state first: their

@@ -3,6 +3,7 @@
 
 import { h, $, $$, replace } from "./dom.js";
 import { check } from "./num.js";
+import { keepPage } from "../job/keep.js";
 
 const INCOMPLETE = /^([+-]?[.,]?|[+-]?\d+([.,]\d*)?[eE][+-]?)$/;
 
@@ -157,9 +158,8 @@ export function banner(container, kind, text) {
 
 /**
  * The field being typed in under `root`, and a function that puts the focus
- * and caret back in its new copy: a re-render while a cell was typed in (the
- * trial-weight suggestion arriving, say) replaced the input under the cursor,
- * and the next keystrokes went nowhere.
+ * and caret back in its new copy after a re-render (the trial-weight
+ * suggestion arriving while a cell is typed in).
  */
 export function keepFocus(root) {
   const el = document.activeElement;
@@ -190,4 +190,28 @@ export async function sendAndShow({ root, run, result, typed, send, view }) {
   } finally {
     run.disabled = false;
   }
+}
+
+// A stand-alone page's input and answer kept (keep.js) as its form changes;
+// the kept answer drawn again; "Start over", asking first if anything is typed.
+export function keptForm(name, typed, empty, view, question, redraw) {
+  const save = () => keepPage(name, typed);
+  let shown = null;
+  try {
+    shown = typed.answer ? view(typed.answer) : null;
+  } catch (e) {
+    typed.answer = null;
+  }
+  const again = h("button", { type: "button", class: "start-over", onclick: () => {
+    if (Object.keys(empty).some((k) => typed[k] !== empty[k]) && !window.confirm(question)) return;
+    Object.assign(typed, empty);
+    keepPage(name, null);
+    redraw();
+  } }, "Start over");
+  const watch = (form) => {
+    form.addEventListener("input", save);
+    form.addEventListener("change", save);
+    return form;
+  };
+  return { save, shown, again, watch };
 }

@@ -1,14 +1,12 @@
-// Free decay: the natural frequency and damping of a rotor or structure from
-// a record of its free decay (a tap test, a coast of the shaft held still),
-// by `POST /api/v1/identify/free-decay` (method §7). Samples are pasted as a
-// column from a spreadsheet or a row separated by commas, spaces or tabs;
-// the service fits the decay and says what it could and could not tell.
+// Free decay: natural frequency and damping from a record of a free decay (a
+// tap test), by `POST /api/v1/identify/free-decay` (method §7), the samples
+// pasted as a column or a row; the service says what it could not tell.
 
 import { h, replace, $ } from "../page/dom.js";
-import { numberInput, selectInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
+import { numberInput, selectInput, mark, clearMarks, banner, sendAndShow, keptForm } from "../page/fields.js";
 import { parseNumber, sig, isHeading } from "../page/num.js";
 import { api } from "../job/api.js";
-import { keepPage, keptPage, forgetPage } from "../job/keep.js";
+import { keptPage } from "../job/keep.js";
 
 const LAWS = [
   ["viscous", "Viscous — damping force ∝ velocity: the amplitude decays exponentially (oil film, material)"],
@@ -17,36 +15,30 @@ const LAWS = [
 
 const EMPTY = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null };
 
-// What was typed (and the answer to it), kept while other steps are visited
-// and across a reload (keep.js), until "Start over".
+// What was typed and its answer, kept across steps and reloads until "Start over".
 const typed = keptPage("decay", EMPTY);
 if (!LAWS.some(([v]) => v === typed.damping)) typed.damping = EMPTY.damping;
-const keepTyped = () => keepPage("decay", typed);
 
 /**
  * The samples of pasted text, or `{ error }` naming the first bad one. A
  * column (one a line) or a row separated by tabs, spaces or ";" takes a
  * decimal comma as the runs grid does (2,5); text with no such separators,
- * or with ", " between numbers, is split at its commas. A heading over the
- * column is passed over. A table of columns is refused: a time column
- * copied beside the samples was read into them, times and samples
- * alternating, and fitted as a record.
+ * or with ", " between numbers, is split at its commas. A heading is passed
+ * over; a table of columns (a time column beside the samples) is refused.
  */
 export function parseSamples(text) {
   const t = String(text || "").trim();
   if (t === "") return { error: "paste the samples, one a line or separated by commas, spaces or tabs" };
   const lines = t.split(/\r?\n/).map((l, k) => ({ k: k + 1, text: l.trim() })).filter((l) => l.text !== "");
   if (lines.length > 1 && isHeading(lines[0].text)) lines.shift();
-  // Told from the numbers alone: a heading's "Amplitude, mm/s" is no comma list.
   const body = lines.map((l) => l.text).join("\n");
   const commaSeparated = !/[\s;]/.test(body) || /,\s/.test(body);
   const split = (line) => line.split(commaSeparated ? /[\s,;]+/ : /[\s;]+/).filter((x) => x !== "");
-  // A table of 2 to 4 columns, the same number on every line (a row wrapped
-  // over lines, many numbers a line, is read in order as before).
+  // 2 to 4 on every line; a row wrapped over lines is read in order.
   const widths = new Set(lines.map((l) => split(l.text).length));
   const n = lines.length > 1 && widths.size === 1 ? [...widths][0] : 1;
   if (n >= 2 && n <= 4) {
-    return { error: `${n} columns pasted (line ${lines[0].k}: ${lines[0].text}): paste the samples' column alone (a time column is not needed: its step is the sampling step dt_s)` };
+    return { error: `${n} columns pasted (line ${lines[0].k}: ${lines[0].text}): paste the samples' column alone (no time column: its step is dt_s)` };
   }
   const tokens = lines.flatMap((l) => split(l.text));
   if (!tokens.length) return { error: "paste the samples, one a line or separated by commas, spaces or tabs" };
@@ -92,7 +84,6 @@ function answerView(a) {
   return h("div", { class: "decay-result", role: "status" },
     h("h3", {}, "Answer"),
     answerTable(a),
-    // Said only where a figure has one (a turbulent fit gives none).
     Number.isFinite(a.frequency_resolution_hz) || Number.isFinite(a.damping_ratio_resolution)
       ? h("p", { class: "hint decay-pm" }, "± is the 95 % half-width of the figure, from the fit and the samples' scatter about it.")
       : null,
@@ -111,10 +102,13 @@ export function renderDecay(root) {
     oninput: () => { typed.samples = samples.value; mark(samples, ""); },
   });
   samples.value = typed.samples;
-  const result = h("div", { class: "decay-out" }, keptAnswer());
+  const kept = keptForm("decay", typed, EMPTY, answerView, "Empty this page: the samples, the sampling step, the offset and the answer? Cancel to keep them.", () => {
+    renderDecay(root);
+    $('[data-field="samples"]', root).focus();
+  });
+  const result = h("div", { class: "decay-out" }, kept.shown);
   const run = h("button", { type: "submit", class: "primary identify" }, "Identify");
-  const again = h("button", { type: "button", class: "start-over", onclick: () => startOver() }, "Start over");
-  const form = h("form", { class: "decay-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); identify(); } },
+  const form = kept.watch(h("form", { class: "decay-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); identify(); } },
     h("div", { class: "decay-fields" },
       h("label", {}, h("span", {}, "Samples (a column pasted from a spreadsheet, or separated by commas, spaces or tabs)"),
         h("span", { class: "field samples-field" }, samples, h("span", { class: "msg", role: "alert" }))),
@@ -126,11 +120,8 @@ export function renderDecay(root) {
         h("p", { class: "hint law" }),
         h("label", {}, h("span", {}, "Offset (optional, samples' unit; empty: fitted)"),
           numberInput({ field: "offset", kind: "offset", value: typed.offset, required: false, label: "Offset, optional", size: 9, onValue: (v) => { typed.offset = v; } })),
-        h("div", { class: "actions decay-actions" }, run, again))),
-  );
-  // Each field updates `typed` first (its own listener); the form hears it after.
-  form.addEventListener("input", keepTyped);
-  form.addEventListener("change", keepTyped);
+        h("div", { class: "actions decay-actions" }, run, kept.again))),
+  ));
   const explain = () => { $(".law", form).textContent = LAWS.find(([v]) => v === typed.damping)[1]; };
   explain();
 
@@ -150,28 +141,7 @@ export function renderDecay(root) {
     const body = { samples: parsed.values, dt_s: typed.dt_s, damping: typed.damping };
     if (typed.offset !== null) body.offset = typed.offset;
     await sendAndShow({ root, run, result, typed, send: () => api.identifyFreeDecay(body), view: answerView });
-    keepTyped();
-  }
-
-  /** The answer kept with the input; none if it cannot be drawn (kept by another version of the form). */
-  function keptAnswer() {
-    if (!typed.answer) return null;
-    try {
-      return answerView(typed.answer);
-    } catch (e) {
-      typed.answer = null;
-      return null;
-    }
-  }
-
-  /** Empty the page for another record, once the technician says so when something is typed. */
-  function startOver() {
-    const any = typed.samples.trim() !== "" || typed.dt_s !== null || typed.offset !== null || typed.answer;
-    if (any && !window.confirm("Empty this page: the samples, the sampling step, the offset and the answer? Cancel to keep them.")) return;
-    Object.assign(typed, EMPTY);
-    forgetPage("decay");
-    renderDecay(root);
-    $('[data-field="samples"]', root).focus();
+    kept.save();
   }
 
   replace(root,

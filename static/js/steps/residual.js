@@ -1,15 +1,13 @@
-// Residual-unbalance check (API 617 / API 684 test-stand acceptance): the
-// trial weight placed in turn at equally spaced angles, the 1X reading at
-// each, by `POST /api/v1/residual-unbalance`. Positions are pasted a line
-// each ("angle amplitude phase", the phase optional), as a spreadsheet copies
-// them; the answer is the service's, with its 95 % interval, API's own
-// worksheet figure beside it and its warnings in its words. Nothing is stored.
+// Residual-unbalance check (API 617 / API 684 test-stand acceptance) by
+// `POST /api/v1/residual-unbalance`: a line per trial position pasted ("angle
+// amplitude phase", the phase optional); the service's answer, 95 % interval,
+// API worksheet figure and warnings. Nothing is stored.
 
 import { h, replace, $ } from "../page/dom.js";
-import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow } from "../page/fields.js";
+import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow, keptForm } from "../page/fields.js";
 import { parseNumber, fmt, fmtAngle, isHeading } from "../page/num.js";
 import { api } from "../job/api.js";
-import { keepPage, keptPage, forgetPage } from "../job/keep.js";
+import { keptPage } from "../job/keep.js";
 
 const PHASES = [["lag", "lag (the analyser's default)"], ["lead", "lead"]];
 const DIRECTIONS = [["against_rotation", "against rotation"], ["with_rotation", "with rotation"]];
@@ -19,26 +17,23 @@ const EMPTY = {
   phase: "lag", angle_direction: "against_rotation", readings: "", answer: null,
 };
 
-// What was typed (and the answer to it), kept while other steps are visited
-// and across a reload (keep.js), until "Start over".
+// What was typed and its answer, kept across steps and reloads until "Start over".
 const typed = keptPage("residual", EMPTY);
 if (!PHASES.some(([v]) => v === typed.phase)) typed.phase = EMPTY.phase;
 if (!DIRECTIONS.some(([v]) => v === typed.angle_direction)) typed.angle_direction = EMPTY.angle_direction;
-const keepTyped = () => keepPage("residual", typed);
 
 /**
  * The positions of pasted text, a line each: trial angle, amplitude and
  * optionally phase, separated by tabs, spaces or ";" (decimal commas as in
- * the runs grid), or by ", " between numbers; a degree sign after an angle
- * or phase (30°) as a spreadsheet formats it, and a heading line over the
- * columns ("Angle  Amplitude  Phase"), are passed over. `{ readings }` or
- * `{ error }` naming the line.
+ * the runs grid), or by ", " between numbers; a heading and degree signs
+ * passed over. `{ readings, lines }` (each one's line) or `{ error }`.
  */
 export function parsePositions(text) {
   const lines = String(text || "").split(/\r?\n/).map((l, k) => ({ k: k + 1, line: l.trim() })).filter((l) => l.line !== "");
   if (lines.length && isHeading(lines[0].line)) lines.shift();
   if (!lines.length) return { error: "paste a line per trial position: angle, amplitude and (optionally) phase" };
   const readings = [];
+  const at = [];
   for (const { k, line } of lines) {
     const tokens = line.split(/[\s;]+|,\s+/).filter((x) => x !== "");
     if (tokens.length < 2 || tokens.length > 3) {
@@ -53,8 +48,19 @@ export function parsePositions(text) {
     const reading = { angle_deg: values[0], amplitude: values[1] };
     if (values.length === 3) reading.phase_deg = values[2];
     readings.push(reading);
+    at.push(k);
   }
-  return { readings };
+  const phased = readings.map((r) => r.phase_deg !== undefined);
+  const odd = phased.findIndex((p) => p !== phased[0]);
+  if (odd > 0) {
+    return { error: `line ${at[odd]} ${phased[0] ? "has no phase, line " + at[0] + " has one" : "has a phase, line " + at[0] + " has none"}: a phase on every line or none` };
+  }
+  return { readings, lines: at };
+}
+
+/** The service's "readings[3]" as the line it was pasted on. */
+export function inLines(text, lines) {
+  return String(text ?? "").replace(/readings\[(\d+)\]/g, (m, i) => (lines[Number(i)] ? `line ${lines[Number(i)]}` : m));
 }
 
 function answerTable(a) {
@@ -105,12 +111,15 @@ export function renderResidual(root) {
     oninput: () => { typed.readings = readings.value; mark(readings, ""); },
   });
   readings.value = typed.readings;
-  const result = h("div", { class: "residual-out" }, keptAnswer());
+  const kept = keptForm("residual", typed, EMPTY, answerView, "Empty this page: the readings, the plane, speed, load and trial weight, and the answer? Cancel to keep them.", () => {
+    renderResidual(root);
+    $('[data-field="readings"]', root).focus();
+  });
+  const result = h("div", { class: "residual-out" }, kept.shown);
   const run = h("button", { type: "submit", class: "primary check-residual" }, "Check");
-  const again = h("button", { type: "button", class: "start-over", onclick: () => startOver() }, "Start over");
   const num = (field, kind, label, placeholder, key) => h("label", {}, h("span", {}, label),
     numberInput({ field, kind, value: typed[key], label, placeholder, size: 9, onValue: (v) => { typed[key] = v; } }));
-  const form = h("form", { class: "decay-form residual-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); check(); } },
+  const form = kept.watch(h("form", { class: "decay-form residual-form", novalidate: true, onsubmit: (e) => { e.preventDefault(); check(); } },
     h("div", { class: "decay-fields" },
       h("label", {}, h("span", {}, "Readings: a line per trial position — the trial weight's angle, the 1X amplitude (any one unit), and its phase if measured; pasted from a spreadsheet or separated by spaces"),
         h("span", { class: "field readings-field" }, readings, h("span", { class: "msg", role: "alert" }))),
@@ -125,11 +134,8 @@ export function renderResidual(root) {
           selectInput({ field: "conventions.phase", value: typed.phase, choices: PHASES, label: "Phase convention", onValue: (v) => { typed.phase = v; } })),
         h("label", {}, h("span", {}, "Trial angles counted"),
           selectInput({ field: "conventions.angle_direction", value: typed.angle_direction, choices: DIRECTIONS, label: "Trial angle direction", onValue: (v) => { typed.angle_direction = v; } })),
-        h("div", { class: "actions decay-actions" }, run, again))),
-  );
-  // Each field updates `typed` first (its own listener); the form hears it after.
-  form.addEventListener("input", keepTyped);
-  form.addEventListener("change", keepTyped);
+        h("div", { class: "actions decay-actions" }, run, kept.again))),
+  ));
 
   async function check() {
     clearMarks(root);
@@ -152,29 +158,15 @@ export function renderResidual(root) {
       conventions: { phase: typed.phase, angle_direction: typed.angle_direction },
     };
     if (typed.plane) body.plane = typed.plane;
-    await sendAndShow({ root, run, result, typed, send: () => api.residualUnbalance(body), view: answerView });
-    keepTyped();
-  }
-
-  /** The answer kept with the input; none if it cannot be drawn (kept by another version of the form). */
-  function keptAnswer() {
-    if (!typed.answer) return null;
-    try {
-      return answerView(typed.answer);
-    } catch (e) {
-      typed.answer = null;
-      return null;
-    }
-  }
-
-  /** Empty the page for another test, once the technician says so when something is typed. */
-  function startOver() {
-    const any = typed.readings.trim() !== "" || typed.plane !== "" || [typed.speed_rpm, typed.journal_load_kg, typed.mass_g, typed.radius_mm].some((v) => v !== null) || typed.answer;
-    if (any && !window.confirm("Empty this page: the readings, the plane, speed, load and trial weight, and the answer? Cancel to keep them.")) return;
-    Object.assign(typed, EMPTY);
-    forgetPage("residual");
-    renderResidual(root);
-    $('[data-field="readings"]', root).focus();
+    const said = (w) => ({ ...w, message: inLines(w.message, parsed.lines) });
+    const send = () => api.residualUnbalance(body).then(
+      (a) => (Array.isArray(a.warnings) ? { ...a, warnings: a.warnings.map(said) } : a),
+      (err) => {
+        err.message = inLines(err.message, parsed.lines);
+        throw err;
+      });
+    await sendAndShow({ root, run, result, typed, send, view: answerView });
+    kept.save();
   }
 
   replace(root,

@@ -181,16 +181,23 @@ pub async fn a_heading_and_degree_signs_are_passed_over(stand: &Stand) {
         &[
             "Angle\tAmplitude\tPhase\n0°\t2.453\t335.7°\n30°\t2,59\t356.3°",
             "0 2.453 335.7\n30 2.59 356.3",
+            "0 2.453 335.7\n\n30 2.59\n60 2.618 15.5",
         ],
     )
     .await;
-    assert_eq!(got[0], got[1], "{got:?}");
+    assert_eq!(got[0]["readings"], got[1]["readings"], "{got:?}");
     assert_eq!(
-        got[1],
-        json!({ "readings": [
+        got[1]["readings"],
+        json!([
             { "angle_deg": 0, "amplitude": 2.453, "phase_deg": 335.7 },
             { "angle_deg": 30, "amplitude": 2.59, "phase_deg": 356.3 },
-        ] })
+        ])
+    );
+    // A phase missing on one line: which line, counted as pasted (the empty line too).
+    assert_eq!(
+        got[2]["error"],
+        json!("line 3 has no phase, line 1 has one: a phase on every line or none"),
+        "{got:?}"
     );
 
     // Through the page: the twelve positions under a heading, angles and phases with their sign.
@@ -235,4 +242,28 @@ pub async fn a_heading_and_degree_signs_are_passed_over(stand: &Stand) {
         shown.contains(&format!("{residual:.0} g·mm")),
         "{shown} for {said}"
     );
+
+    // A refusal names the line a reading was pasted on, not its index from 0.
+    let mut gap = request.clone();
+    gap["readings"].as_array_mut().unwrap().remove(5);
+    let refused = post(stand, "/api/v1/residual-unbalance", gap).await;
+    let message = refused["error"]["message"]
+        .as_str()
+        .unwrap_or_else(|| panic!("{refused}"));
+    assert!(message.contains("readings[0]"), "{refused}");
+    let mut lines = lines.clone();
+    lines.remove(5);
+    paste(b, &lines.join("\n")).await;
+    b.click("#step-residual button.check-residual").await;
+    b.wait_until(
+        "the refusal is at the readings",
+        "return document.querySelector('#step-residual .readings-field').classList.contains('bad')",
+    )
+    .await;
+    let shown = super::message_at(b, "#step-residual [data-field=\"readings\"]").await;
+    let mut want = message.to_string();
+    for i in (0..11).rev() {
+        want = want.replace(&format!("readings[{i}]"), &format!("line {}", i + 1));
+    }
+    assert_eq!(shown, want, "the service said: {message}");
 }

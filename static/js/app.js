@@ -2,15 +2,9 @@
 // the browser's Back/Forward between them (each step is a history entry:
 // `#session=ID&step=runs`, `#step=setup`, `#machine=ID`), reopening a stored
 // session from the address, and work kept across a reload (keep.js).
-//
-// The modules beside it: page/ builds the page (elements, inputs that check
-// themselves, numbers as typed and shown); job/ holds the job (its state, what
-// is kept in this browser, the service's API and its access token); steps/ has
-// a module per step (set-up, runs, solve, report, sessions, machines, the
-// free-decay identification) and the
-// parts of a step (CSV readings, trial weight, solve options, conventions
-// picture); answer/ shows a solve's answer in words and pictures; plots/ draws
-// the polar, Bode and Nyquist plots.
+// Beside it: page/ (elements, self-checking inputs, numbers), job/ (state,
+// storage, API, token), steps/ (a module per step or page, and their parts),
+// answer/ (a solve's answer in words and pictures), plots/.
 
 import { $, $$, replace, h } from "./page/dom.js";
 import { api, unwrapSession } from "./job/api.js";
@@ -85,8 +79,7 @@ function show(step, push = true) {
 /**
  * Put the focus in the step just shown, where the technician goes on: the
  * first field still empty of the run being typed (the zero run's first cell,
- * a check run's first cell), a new job's name, else the step's heading. The
- * focus was left on the page's body, and Tab started again from the tabs.
+ * a check run's first cell), a new job's name, else the step's heading.
  */
 function focusStep(step) {
   const root = $(`#step-${step}`);
@@ -108,8 +101,7 @@ function showMachine(id) {
 /**
  * Whether the job shown may be left for another (`id`, or a new job for
  * null). A run typed and not stored, or a new job's set-up, lives only in this
- * page and its one local-storage slot: opening another job from the lists
- * dropped it without a word. Ask first.
+ * page and its one local-storage slot: ask before dropping it.
  */
 function mayLeave(id) {
   if (id !== null && id === state.id) return true;
@@ -169,17 +161,10 @@ async function open(id, step = "runs", push = true) {
   }
 }
 
-/**
- * Show the last stored solution again, if it was computed from the runs the
- * session has now (a run corrected since then gives a new version; the stored
- * solution names run ids and versions, so a changed run set is caught here and
- * a re-solve is one click).
- */
+/** Show the last stored solution again if it was computed from the runs the session has now. */
 async function loadLastSolution() {
   try {
-    // The list is paged, oldest first (20 a page unless asked): the last of
-    // the first page was taken, so a job solved more than 20 times reopened
-    // with its 20th solution, or with none when runs came after it.
+    // The list is paged, oldest first: the last of the last page.
     let last = null;
     for (let offset = 0; ; offset += 100) {
       const page = await api.solutions(state.id, 100, offset);

@@ -1,7 +1,5 @@
-// The answer of a solve, as the corrections step shows it: whether the rotor is
-// within tolerance, what to bolt on (or add to what is on now, for a trim),
-// doubtful figures greyed with the reason, each check run beside its
-// prediction, and the pictures. The report reuses the parts.
+// The answer of a solve, as the corrections step shows it (the report reuses
+// the parts): the verdict, what to bolt on, doubts, check runs, pictures.
 
 import { h } from "../page/dom.js";
 import { fmt, fmtAngle, unitOrMix, unitLabel } from "../page/num.js";

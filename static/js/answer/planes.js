@@ -1,9 +1,8 @@
 // Where to bolt the weights on: each plane drawn as the fitter sees it, with
 // the reference mark at the top, the rotation arrow, the fixed places
-// (numbered) and the weights to fit — the kit fit when there is one, else the
-// split over two places, else the correction at its free angle. Drawn as the
-// conventions picture draws it: the rotor turning clockwise in the picture, so
-// angles against rotation run counter-clockwise.
+// (numbered) and the weights to fit — the kit fit, else the split over two
+// places, else the correction at its free angle. The rotor turns clockwise in
+// the picture, as in the conventions picture.
 
 import { h, s } from "../page/dom.js";
 import { fmt, fmtAngle } from "../page/num.js";

@@ -1,7 +1,6 @@
 // The service's warnings in the technician's words: what happened and what to
-// do, never an option name, a field path or a code. Also the rule for an
-// answer that should not be trusted as it stands (wide 95 % figures, a trial
-// that moved the vibration too little), shown greyed with the reason.
+// do, never an option name, a field path or a code; and the rule for an answer
+// not to be trusted as it stands, shown greyed with the reason.
 
 import { fmt, angleDiff } from "../page/num.js";
 
@@ -59,11 +58,7 @@ function unreliableWhy(w) {
   return [alike, weak];
 }
 
-/**
- * `{what, todo, said}` for a warning: `said` is the service's own message,
- * shown beside the plain words (it carries the figures: how small the trial's
- * effect was, the mass bound, the χ²), null when `what` is already made of it.
- */
+/** `{what, todo, said}` for a warning: `said`, the service's own message (its figures), null when `what` is made of it. */
 export function plainWarning(w) {
   const f = PLAIN[w.code];
   if (f) {

@@ -161,13 +161,6 @@ export function loadSession(session, id) {
   state.solution = null;
 }
 
-/** The set-up of a stored job as the start of a new one (same machine, no runs). */
-export function copySetup() {
-  const s = JSON.parse(JSON.stringify(state.setup));
-  s.name = "";
-  return s;
-}
-
 /** The trim job's coefficients in words, or "" for a job with trial runs. */
 export function trimWords(trim = state.setup.trim) {
   if (!trim) return "";

@@ -20,10 +20,7 @@ export function parseNumber(text) {
   return { value };
 }
 
-/**
- * A heading copied over a pasted column ("Amplitude, mm/s", "Angle  Phase"):
- * a line that starts with a letter or a quote, which no number does.
- */
+/** A heading copied over pasted columns: a line starting with a letter or quote. */
 export function isHeading(line) {
   return /^["'A-Za-z\u00C0-\u024F]/.test(String(line).trim());
 }
@@ -35,8 +32,7 @@ export const RULES = {
   angle: { test: (x) => x >= 0 && x <= 360, message: (x) => `angle in degrees, 0 to 360: ${turnWords(x)}` },
   mass: { test: (x) => x > 0 && x < 1e6, message: (x) => (x <= 0 ? "mass in grams, more than 0" : "mass in grams, less than 1000000") },
   radius: { test: (x) => x > 0 && x < 1e5, message: (x) => (x <= 0 ? "radius in mm, more than 0" : "radius in mm, less than 100000") },
-  // The rotor's mass is in kilograms (the service takes up to 10^7 kg); it
-  // was checked by the radius rule and refused as "radius in mm".
+  // The rotor's mass is in kilograms (the service takes up to 10^7 kg).
   // API's W, the static load on the journal nearest the plane.
   load: { test: (x) => x > 0 && x < 1e7, message: (x) => (x <= 0 ? "journal load in kg, more than 0" : "journal load in kg, less than 10000000") },
   rotor_mass: { test: (x) => x > 0 && x < 1e7, message: (x) => (x <= 0 ? "rotor mass in kg, more than 0" : "rotor mass in kg, less than 10000000") },
@@ -128,12 +124,8 @@ export function fmt(x, digits = 1) {
 
 /**
  * A stored reading as it was typed: the number itself, shortest form, up to
- * six significant digits (more than any analyser shows). The service keeps
- * the number, not the text, so 212.45 reads 212.45, 0.085 reads 0.085 and
- * 21,25 reads 21.25 (a decimal comma comes back as a point, trailing zeros go);
- * only readings with more digits than anyone types (a data logger's, a mean
- * of samples) are rounded to six. Four digits showed 212.45 as 212.5 and
- * 1234.5 as 1235, so the grid disagreed with the analyser.
+ * six significant digits (more than any analyser shows): 212.45 reads 212.45,
+ * 21,25 reads 21.25 (the service keeps the number, not the text).
  */
 export function fmtReading(x) {
   return sig(x, 6);
@@ -177,7 +169,6 @@ export function commonUnit(rows) {
  * The unit of a figure taken over these rows, in words: their one unit, or,
  * when they mix units (µm pk-pk beside mils pk-pk), "mixed units: µm pk-pk,
  * mils pk-pk", so that an RMS or a largest over them is not read as µm.
- * Such figures were shown bare, like a number in no unit at all.
  */
 export function unitOrMix(rows) {
   const units = [...new Set((rows || []).map((r) => r.unit).filter(Boolean))];
@@ -186,13 +177,9 @@ export function unitOrMix(rows) {
 }
 
 /**
- * When a session, machine, coefficient version or solution was stored, as one text on
- * every page: "2026-11-24 06:25 UTC". The service stores RFC 3339 times in UTC
- * (…T06:25:39.123Z); the day in ISO order and the zone said match the
- * machine trend's axis (UTC) and the report's ISO date. The Sessions page
- * showed the browser's local format instead ("11/24/2026, 7:25:39 AM"), the
- * Machines page this one, and a solution's date "2026-11-24 08:56:03Z"
- * (its seconds, no "UTC"). A text that is no time is shown as it is.
+ * When something was stored, as one text on every page: "2026-11-24 06:25
+ * UTC" (the service's RFC 3339 UTC time), as the trend's axis and the
+ * report's date; a text that is no time as it is.
  */
 export function storedAt(t) {
   const d = t ? new Date(t) : null;

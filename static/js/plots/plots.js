@@ -31,8 +31,7 @@ const sig = (x) => (Number.isFinite(x) ? String(Number(x.toPrecision(2))) : "–
 /**
  * A damping ratio or amplification factor as the service gives it: a number,
  * or, when the readings do not resolve the damping (`*_bound`), the bound
- * they allow: "≤ ζ" (`upper`), "≥ AF" (`lower`). They were shown as plain
- * numbers, an amplification factor of 2.4e13 as if measured.
+ * they allow: "≤ ζ" (`upper`), "≥ AF" (`lower`), not a figure as if measured.
  */
 function bounded(x, bound, digits) {
   if (bound === "upper") return `≤ ${x > 0 && x < 0.01 ? sig(x) : fmt(x, digits)}`;
@@ -43,8 +42,7 @@ function bounded(x, bound, digits) {
 /**
  * A fitted figure with its 95 % half-width `hw` (the identify answer's
  * `*_resolution*`), both to the half-width's second significant digit:
- * "2452 ± 23", "0.0512 ± 0.0087". The figures were shown bare, to `digits`
- * decimals, as if known to the last digit. A half-width below what `digits`
+ * "2452 ± 23", "0.0512 ± 0.0087". A half-width below what `digits`
  * shows (exact readings) leaves the figure as it was.
  */
 function withHalfWidth(x, hw, digits) {
@@ -67,15 +65,11 @@ const identWarning = (w, tag) => h(tag, { class: `ident-warning ${w.code === "da
  * Identification of the rotor from the coefficients over the speeds (3 or
  * more): every critical speed the service finds, one outside the speeds
  * measured marked as extrapolated, and every warning the answer carries in
- * the service's words, under the result it concerns. Criticals outside the
- * range were left out unsaid, and the warnings (a damping the readings cannot
- * resolve, a poor fit, no mode) were dropped or said in the form's words.
+ * the service's words, under the result it concerns.
  */
 function identification(sol) {
   const box = h("div", { class: "identification" }, h("p", { class: "hint" }, "Looking for a critical speed in the range…"));
-  // Asked again whenever the job sent differs: keyed by the job's id and
-  // number of runs, a corrected run (or a changed service speed) showed the
-  // first answer again after Solve.
+  // Asked again whenever the job sent differs (a corrected run, a new speed).
   const session = sessionJson();
   const key = JSON.stringify(session);
   const draw = (res) => {

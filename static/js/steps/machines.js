@@ -14,9 +14,8 @@ import { plainWarning } from "../answer/words.js";
 
 /**
  * A machine's name, or "" when it has none. A machine is stored without a
- * name when none is typed; one stored earlier with its id as its name (the
- * form did so) has none either: the id was shown twice ("Machine ID-FAN-3 ·
- * ID-FAN-3", and again in the list's Name column).
+ * name when none is typed; one stored earlier with its id as its name has
+ * none either (not the id twice).
  */
 const nameOf = (m) => (m.name && m.name.trim() !== m.id ? m.name : "");
 
@@ -89,8 +88,7 @@ async function setupOfLatest(machine) {
  * The warnings of the machine's latest coefficient version, which a trim job
  * from the stored coefficients uses: jobs whose coefficients disagree with
  * the others' (named by their job names), in plain words with the service's
- * own beside them. The form stored a version pooled from jobs that disagree
- * and showed the page as if all were well.
+ * own beside them.
  */
 function poolWarnings(latest, sessions) {
   const warnings = (latest && latest.warnings) || [];
@@ -115,9 +113,7 @@ function poolWarnings(latest, sessions) {
 /**
  * The unit of each solved job's vibration, as the service gives it beside the
  * job's summary: the one unit of the rows the summary covers, "mixed units"
- * when they are several, "" from a service that does not say. The page
- * fetched every solved job's whole session to read its sensors' units, one
- * request per job.
+ * when they are several, "" from a service that does not say.
  */
 function jobUnits(sessions) {
   const unitOf = (x) => (x.unit ? unitLabel(x.unit) : (x.units || []).length > 1 ? "mixed units" : "");
@@ -138,9 +134,7 @@ async function machinePage(root, id, go) {
   // The latest version's warnings; the page is whole without them.
   const latest = coefficients.length ? await api.getCoefficients(id).catch(() => null) : null;
   const units = jobUnits(sessions);
-  // The jobs a version was pooled from, by name (a deleted one by its id):
-  // the table gave only their number, and a warning naming jobs could not
-  // be matched to the version.
+  // The jobs a version was pooled from, by name (a deleted one by its id).
   const jobName = new Map(sessions.map((x) => [x.id, x.name || x.id]));
   const fromJobs = (ids) => `${ids.length}${ids.length ? `: ${ids.map((i) => `“${jobName.get(i) || i}”`).join(", ")}` : ""}`;
   const inUnit = (x, a, b) => `${fmt(a, 1)}, ${fmt(b, 1)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
@@ -190,8 +184,7 @@ function newMachineForm(root, go) {
       // No name typed: none stored (the id is not a name).
       const body = { id: m.id };
       if (m.name) body.name = m.name;
-      // Mass and speed were sent without the grade the service requires (every
-      // such machine was refused), and one of them alone was dropped unsaid.
+      // All three or none: the service requires the grade with mass and speed.
       const rotor = { mass_kg: m.mass, service_speed_rpm: m.speed, balance_grade: m.grade };
       if (!checkRotor(root, rotor, "machine.")) return banner(root, "error", "Give the rotor's mass, service speed and balance grade, or none of them. Nothing was stored.");
       if (m.mass) body.rotor = rotor;
@@ -220,8 +213,7 @@ export async function renderMachines(root, go) {
   const row = (x) => h("tr", {},
     h("td", {}, h("button", { type: "button", class: "link open-machine", dataset: { id: x.id }, onclick: () => go.showMachine(x.id) }, x.id)),
     h("td", { class: nameOf(x) ? "name" : "name none" }, nameOf(x) || "–"), h("td", {}, storedAt(x.created_at)));
-  // A page at a time (newest first): only the first 100 were shown, and a
-  // fleet's older machines could not be reached from the form.
+  // A page at a time (newest first), every machine reachable.
   await pagedList({
     root, list, more, row, pageSize: MACHINES_PAGE, columns: 3,
     what: "machines", shownAs: "machines", empty: "No machines yet.",

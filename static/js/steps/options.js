@@ -14,8 +14,7 @@ export function runsWithWeights() {
 
 /**
  * What each stored run with weights is, "trial" or "check": its `purpose`,
- * which the form stores with every run (names are the technician's: a check
- * run renamed "trial…" was counted as a trial). A run stored without one
+ * which the form stores with every run. A run stored without one
  * (by another client, or before the form stored it) is guessed from the
  * order and the name as before: a check run is recorded once every plane has
  * had its trial (every run, in a trim job) or is named "check…", except that
@@ -84,8 +83,7 @@ export function sensorUnits() {
 /**
  * The acceptable vibration: one figure when every sensor reads in one unit;
  * one per unit when they mix, since one figure cannot be both 50 µm and
- * 50 mils (it was one field labelled "sensor units", compared with the
- * largest reading whatever its unit).
+ * 50 mils.
  */
 function limitFields(o) {
   const units = sensorUnits();

@@ -1,8 +1,5 @@
 // Step 4, the printable report with what ISO 21940-13 asks of an in-situ
-// balancing report: the answer first (verdict, weights, acceptance), then the
-// machine and reason, instrumentation and conventions, every weight and run
-// with units, the coefficients used, plots, the date and signature lines.
-// Print CSS shows only this section on paper.
+// balancing report, the answer first. Print CSS shows only this section.
 
 import { h, replace, $ } from "../page/dom.js";
 import { fmt, fmtAngle, unitLabel, unitOrMix, storedAt } from "../page/num.js";

@@ -305,11 +305,14 @@ async function store(root, rerender) {
     // Say what became of the run, not only that the service is away.
     if (err instanceof ApiError && err.code === "network") {
       keepNow();
-      if (!uncertain) return banner(root, "error", "The fieldbal service does not answer, so the run was not stored. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again.");
+      const away = "The fieldbal service does not answer, so ";
+      const kept = "What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again";
+      const lost = "the service may have taken it before its answer was lost";
+      if (!uncertain) return banner(root, "error", `${away}the run was not stored. ${kept}.`);
       if (state.id === null) {
-        return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the job was stored with its zero run: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again; the form looks for the job among the stored sessions first, and stores it only if it is not there.");
+        return banner(root, "error", `${away}this page cannot tell whether the job was stored with its zero run: ${lost}. ${kept}; the form looks for the job among the stored sessions first, and stores it only if it is not there.`);
       }
-      return banner(root, "error", "The fieldbal service does not answer, so this page cannot tell whether the run was stored: the service may have taken it before its answer was lost. What you typed is kept in this browser: start the service (the command fieldbal serve), then press Store again; the form looks at what is stored first, and stores the run only if it is not there.");
+      return banner(root, "error", `${away}this page cannot tell whether the run was stored: ${lost}. ${kept}; the form looks at what is stored first, and stores the run only if it is not there.`);
     }
     const prefix = state.id === null ? "" : `runs[${k}].`;
     if (!markServerError(err, prefix)) banner(root, "error", err.message);
@@ -403,9 +406,7 @@ function grid(rerender) {
  * A block copied from a spreadsheet or an analyser's table (cells split by
  * tabs, rows by line breaks) pasted into a cell of the run being typed: its
  * values go into that cell and the ones after it in Tab order (amplitude,
- * phase, the next row's amplitude, …), each checked as if typed. The whole
- * block landed in the one cell ("465.3⇥356.6" marked "not a number"), and
- * the technician typed the row again by hand.
+ * phase, the next row's amplitude, …), each checked as if typed.
  */
 function pasteAcross(e, root) {
   const cell = e.target;
@@ -423,9 +424,8 @@ function pasteAcross(e, root) {
     input.dispatchEvent(new Event("input", { bubbles: true }));
   });
   cells[from + Math.min(values.length, room) - 1].focus();
-  // More values than cells left: said, not dropped unseen (above the run, not
-  // at a cell: a mark on a good cell goes at its blur, and the layout moving
-  // under the pointer then ate the click on Store).
+  // More values than cells left: said above the run (a mark on a cell would
+  // move the layout under the pointer at its blur).
   const extra = values.length - room;
   banner(root, "error", extra > 0 ? `${values.length} values were pasted and ${room} cell${room === 1 ? "" : "s"} of this run were left from the one pasted into: ${extra === 1 ? "the last value" : `the last ${extra}`} (${values.slice(room).join(", ")}) ${extra === 1 ? "was" : "were"} not used. Check that the block was copied from the right place.` : "");
 }
@@ -449,8 +449,7 @@ export function renderRuns(root, solve) {
   if (state.draft) reshapeDraft(state.draft);
   const rerender = () => renderRuns(root, solve);
   const d = state.draft;
-  // Planes tried, not runs with weights: check runs carry weights too, and
-  // counting them said "4 of 2 stored" after two check runs.
+  // Planes tried, not runs with weights: check runs carry weights too.
   const tried = state.setup.planes.filter((p) => triedPlanes().has(p.id)).length;
   const planes = state.setup.planes.length;
   const k = d ? draftPosition() : -1;
@@ -474,7 +473,7 @@ export function renderRuns(root, solve) {
             : `Every plane has had its trial weight (${tried} of ${planes}). Solve, or add a run: list every weight that is on the rotor during it.`),
     d ? h("div", { class: "draft", onkeydown: (e) => {
       // Enter in the run name or a weight goes on to the first field still
-      // empty (the readings), or stores the run when all are typed; it did nothing.
+      // empty (the readings), or stores the run when all are typed.
       if (e.key !== "Enter" || !e.target.matches("input[type=text]")) return;
       e.preventDefault();
       const next = firstEmptyField(root);

@@ -36,8 +36,7 @@ export function readingsCsv() {
   for (const run of state.runs.filter((r) => r.stored)) {
     for (const row of rows()) {
       const r = readingFor(run, row);
-      // The weights as stored (12.345 g at 123.45°): rounded for the grid's
-      // header to one decimal, the file said 12.3 g at 123.5°.
+      // The weights as stored (12.345 g at 123.45°), not as the grid rounds them.
       if (r) out.push([run.id, weightsText(run.weights, fmtReading), r.speed_rpm, r.sensor, units.get(r.sensor), r.amplitude, r.phase_deg]);
     }
   }
@@ -48,13 +47,10 @@ export function readingsCsv() {
  * The solution as CSV: corrections (and their bias-corrected estimates),
  * the predicted residual per sensor and speed with its unit and the phases'
  * convention, and every warning in the service's words ("code: message", in
- * the column `note`). The unit, the phase convention and the warnings
- * were left out: an engineer reading the file alone could not tell µm from
- * mils, lag from lead, or that a trial was too small to trust. After `note`,
- * a trim's `from_run` (the run whose state the corrections add to, and whose
- * readings are the residual's "before") and each correction's `total` (the
- * one weight per plane that replaces every weight in it): a trim's file did
- * not say that its weights were to be added to those on the rotor.
+ * the column `note`). After `note`, a trim's `from_run` (the run whose state
+ * the corrections add to, and whose readings are the residual's "before")
+ * and each correction's `total` (the one weight per plane that replaces
+ * every weight in it).
  */
 export function resultsCsv() {
   const sol = state.solution;
@@ -125,8 +121,7 @@ export async function renderSessions(root, open, imported) {
       if (!window.confirm(`Delete the stored session “${x.name ?? x.id}”?`)) return;
       try { await api.deleteSession(x.id); renderSessions(root, open, imported); } catch (err) { banner(root, "error", err.message); }
     } }, "Delete")));
-  // The service lists a page at a time (newest first): only the 50 newest
-  // were shown, and older sessions could not be reached from the form.
+  // The service lists a page at a time (newest first), every session reachable.
   await pagedList({
     root, list, more, row, pageSize: SESSIONS_PAGE, columns: 4,
     what: "sessions", shownAs: "stored sessions", empty: "No stored sessions yet.",

@@ -118,8 +118,8 @@ function checkUnique(root, list, kind) {
 }
 
 /**
- * A trim job says so from its first step (it looked like any new job until
- * the runs step), naming whose coefficients it is solved with: the machine's
+ * A trim job says so from its first step, naming whose coefficients it is
+ * solved with: the machine's
  * stored ones and their version (the one the session names, or the latest,
  * asked of the service, as the solve will take), or the supplied ones.
  */
@@ -141,7 +141,7 @@ export function renderSetup(root, next) {
   const locked = setupLocked();
   const setup = state.setup;
   const rerender = () => renderSetup(root, next);
-  // Enter in a field goes on, as Enter stores a run in the grid (it did nothing here).
+  // Enter in a field goes on, as Enter stores a run in the grid.
   root.onkeydown = (e) => {
     if (e.key !== "Enter" || !e.target.matches("input")) return;
     e.preventDefault();

@@ -50,10 +50,9 @@ export function angleWords(conventions) {
 }
 
 /**
- * The warnings that name a plane, in a row under that plane's correction:
- * they were only in the box above the answer, so the weight read off the
- * table (a mass held at its limit, a split that cannot be exact) came
- * without them.
+ * The warnings that name a plane, in a row under that plane's correction, so
+ * that the weight read off the table (a mass held at its limit, a split that
+ * cannot be exact) comes with them.
  */
 function planeWarnings(solution, plane) {
   return (solution.warnings || []).filter((w) => w.plane === plane).map((w) => h("tr", { class: "plane-warning", dataset: { code: w.code, plane } },
@@ -104,12 +103,7 @@ export function residualTable(solution) {
   );
 }
 
-/**
- * A note under the residual table where a row's 95 % bound is below its
- * predicted figure: the prediction carries the scatter of that row's own
- * readings, which will not be on the rotor once the weights are fitted, and
- * the bound is for the vibration that will really remain (method.md 8.6–8.8).
- */
+/** Why a row's 95 % bound may be below its predicted figure (method.md 8.6–8.8). */
 export function residualNote(solution) {
   const below = (solution.predicted_residual || []).filter((r) => r.amplitude_95 !== undefined && r.amplitude_95 !== null && r.amplitude_95 < r.amplitude);
   if (!below.length) return "";
@@ -155,21 +149,14 @@ export function warningsBox(solution) {
       return h("li", { dataset: { code: w.code, plane: w.plane || "" } },
         what,
         todo ? h("div", { class: "advice" }, `What to do: ${todo}`) : "",
-        // The service's own message, a click away: it carries the figures
-        // (how small the trial's effect was, the mass bound, the χ²) and the
-        // names of planes and runs, in words written for the API's users.
+        // The service's own message, a click away: its figures and names.
         said ? h("details", { class: "said" }, h("summary", {}, "The service's own words"), h("p", { class: "said-text" }, said)) : "");
     })),
   );
 }
 
-/**
- * Ask the service for a solve. The step counts the solves it asks for
- * (`data-solves`) and says which one has come back, answered or refused
- * (`data-settled`): while a solve is out the answer before it is still
- * shown, and the step is busy (`aria-busy`), its Solve button off, so that a
- * second press does not store a second solution.
- */
+// Solves asked (`data-solves`) and the last come back (`data-settled`); while
+// one is out the step is busy and its button off (no second solution stored).
 async function solve(root, rerender) {
   const mine = Number(root.dataset.solves || 0) + 1;
   root.dataset.solves = String(mine);

@@ -57,7 +57,21 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
     let css = field(&format!("options.max_mass_g.{plane}"));
     type_into(b, &css, &format!("{limit}")).await;
     b.click("#step-solve button.solve").await;
+    // While it is out the step says it is busy and Solve is off: a second
+    // press stored a second solution.
+    let out = js(
+        b,
+        "const s = document.querySelector('#step-solve'); return [s.getAttribute('aria-busy'), s.querySelector('button.solve').disabled]",
+    )
+    .await;
+    assert_eq!(out, json!(["true", true]), "while the solve is out");
     let shown = corrections_on_page(b).await;
+    let after = js(
+        b,
+        "const s = document.querySelector('#step-solve'); return [s.getAttribute('aria-busy'), s.querySelector('button.solve').disabled]",
+    )
+    .await;
+    assert_eq!(after, json!([null, false]), "once the answer is in");
     let want = want["corrections"]
         .as_array()
         .unwrap_or_else(|| panic!("{want}"));

@@ -146,7 +146,7 @@ export function renderDecay(root) {
 
   replace(root,
     h("h2", {}, "Free decay: natural frequency and damping"),
-    h("p", { class: "note" }, "From a record of a free decay (tap the machine, or let a shaft swing out) at a constant sampling step: the natural frequency and damping the service fits to it (method §7). Works offline, nothing is stored."),
+    h("p", { class: "note" }, "From a record of a free decay (tap the machine, or let a shaft swing out) at a constant sampling step: the natural frequency and damping the service fits to it (method §7). Works offline; nothing is stored on the service."),
     form,
     result);
 }

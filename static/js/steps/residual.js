@@ -1,7 +1,7 @@
 // Residual-unbalance check (API 617 / API 684 test-stand acceptance) by
 // `POST /api/v1/residual-unbalance`: a line per trial position pasted ("angle
 // amplitude phase", the phase optional); the service's answer, 95 % interval,
-// API worksheet figure and warnings. Nothing is stored.
+// API worksheet figure and warnings.
 
 import { h, replace, $ } from "../page/dom.js";
 import { numberInput, selectInput, textInput, mark, clearMarks, banner, sendAndShow, keptForm } from "../page/fields.js";
@@ -171,7 +171,7 @@ export function renderResidual(root) {
 
   replace(root,
     h("h2", {}, "Residual-unbalance check (API 617 / API 684)"),
-    h("p", { class: "note" }, "The test-stand acceptance test: a known trial weight placed in turn at 4 or more equally spaced angles (API asks 6 or 12; the first may be repeated at the end), the 1X reading at each. The service fits all positions exactly and compares the residual with API's allowable 6350·W/N g·mm (4W/N oz·in). Nothing is stored."),
+    h("p", { class: "note" }, "The test-stand acceptance test: a known trial weight placed in turn at 4 or more equally spaced angles (API asks 6 or 12; the first may be repeated at the end), the 1X reading at each. The service fits all positions exactly and compares the residual with API's allowable 6350·W/N g·mm (4W/N oz·in). Nothing is stored on the service."),
     form,
     result);
 }

@@ -61,6 +61,19 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
         answered,
         "the answer shown before the reload is shown after it"
     );
+    // Kept in this browser, so the page no longer says that nothing is stored at all.
+    let note = js(
+        b,
+        "return document.querySelector('#step-decay p.note').textContent",
+    )
+    .await;
+    assert!(
+        note.as_str()
+            .unwrap()
+            .to_lowercase()
+            .contains("nothing is stored on the service."),
+        "{note}"
+    );
 
     // Sent again after the reload: the same request as typed, answered as the service answers it.
     record_requests(b).await;

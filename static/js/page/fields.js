@@ -174,10 +174,9 @@ export function keepFocus(root) {
   };
 }
 
-// Send a stand-alone page's request (`send`, a function returning the
-// service's answer) from its `run` button: the button off while it is out,
-// the answer kept in `typed.answer` and shown by `view` in `result`; a
-// refusal marked at the field it names, or else said in a banner on `root`.
+// Send a stand-alone page's request (`send`) from its `run` button (off while
+// out): the answer into `typed.answer`, shown by `view` in `result`; a refusal
+// at the field it names, else in a banner on `root`.
 export async function sendAndShow({ root, run, result, typed, send, view }) {
   run.disabled = true;
   try {
@@ -193,9 +192,15 @@ export async function sendAndShow({ root, run, result, typed, send, view }) {
 }
 
 // A stand-alone page's input and answer kept (keep.js) as its form changes;
-// the kept answer drawn again; "Start over", asking first if anything is typed.
+// the kept answer drawn again, greyed (stale) after a change until sent again;
+// "Start over", asking first if anything is typed.
 export function keptForm(name, typed, empty, view, question, redraw) {
-  const save = () => keepPage(name, typed);
+  let out = null;
+  const save = (stale) => {
+    typed.stale = stale && !!typed.answer;
+    if (out) out.classList.toggle("stale", typed.stale);
+    keepPage(name, typed);
+  };
   let shown = null;
   try {
     shown = typed.answer ? view(typed.answer) : null;
@@ -208,10 +213,12 @@ export function keptForm(name, typed, empty, view, question, redraw) {
     keepPage(name, null);
     redraw();
   } }, "Start over");
-  const watch = (form) => {
-    form.addEventListener("input", save);
-    form.addEventListener("change", save);
+  const watch = (form, result) => {
+    out = result;
+    result.classList.toggle("stale", !!typed.stale);
+    form.addEventListener("input", () => save(true));
+    form.addEventListener("change", () => save(true));
     return form;
   };
-  return { save, shown, again, watch };
+  return { save: () => save(false), shown, again, watch };
 }

@@ -13,7 +13,7 @@ const LAWS = [
   ["turbulent", "Turbulent — damping force ∝ velocity²: the amplitude decays as 1/(1 + λt) (air, fluid drag)"],
 ];
 
-const EMPTY = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null };
+const EMPTY = { samples: "", dt_s: null, damping: "viscous", offset: null, answer: null, stale: false };
 
 // What was typed and its answer, kept across steps and reloads until "Start over".
 const typed = keptPage("decay", EMPTY);
@@ -121,7 +121,7 @@ export function renderDecay(root) {
         h("label", {}, h("span", {}, "Offset (optional, samples' unit; empty: fitted)"),
           numberInput({ field: "offset", kind: "offset", value: typed.offset, required: false, label: "Offset, optional", size: 9, onValue: (v) => { typed.offset = v; } })),
         h("div", { class: "actions decay-actions" }, run, kept.again))),
-  ));
+  ), result);
   const explain = () => { $(".law", form).textContent = LAWS.find(([v]) => v === typed.damping)[1]; };
   explain();
 

@@ -16,7 +16,7 @@ export function runsWithWeights() {
  * What each stored run with weights is, "trial" or "check": its `purpose`,
  * which the form stores with every run. A run stored without one
  * (by another client, or before the form stored it) is guessed from the
- * order and the name as before: a check run is recorded once every plane has
+ * order and the name: a check run is recorded once every plane has
  * had its trial (every run, in a trim job) or is named "check…", except that
  * one named "trial…" stays a trial (a second trial in a tried plane).
  */

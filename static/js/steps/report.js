@@ -9,8 +9,8 @@ import { correctionsTable, residualTable, residualNote, summaryBox, warningsBox,
 import { verdict, trimWords, runChecks, planePictures, doubts } from "../answer/answer.js";
 import { plotsSection } from "../plots/plots.js";
 
-// The kit weights to fit, when the solution has a discrete fit (`fit`): grams
-// to 0.1 g as every other table of weights (it gave 10.00 g).
+// The kit weights to fit, when the solution has a discrete fit (`fit`), in g
+// to 0.1 g as every other table of weights.
 function fitTable(sol) {
   if (!sol.fit) return "";
   const optimal = sol.fit_summary && sol.fit_summary.optimal;

@@ -14,7 +14,7 @@ const DIRECTIONS = [["against_rotation", "against rotation"], ["with_rotation", 
 
 const EMPTY = {
   plane: "", speed_rpm: null, journal_load_kg: null, mass_g: null, radius_mm: null,
-  phase: "lag", angle_direction: "against_rotation", readings: "", answer: null,
+  phase: "lag", angle_direction: "against_rotation", readings: "", answer: null, stale: false,
 };
 
 // What was typed and its answer, kept across steps and reloads until "Start over".
@@ -135,7 +135,7 @@ export function renderResidual(root) {
         h("label", {}, h("span", {}, "Trial angles counted"),
           selectInput({ field: "conventions.angle_direction", value: typed.angle_direction, choices: DIRECTIONS, label: "Trial angle direction", onValue: (v) => { typed.angle_direction = v; } })),
         h("div", { class: "actions decay-actions" }, run, kept.again))),
-  ));
+  ), result);
 
   async function check() {
     clearMarks(root);

@@ -208,9 +208,7 @@ function stored(root, words) {
   state.solution = null;
   changed();
   if (words) banner(root, "ok", words);
-  // On to what comes next (the focus was left on the page's body, and Tab
-  // started again from the top): another trial while a plane is untried,
-  // else Solve.
+  // On to what comes next: another trial while a plane is untried, else Solve.
   ($("button.go-solve:not(:disabled)", root) || $("button.add-trial", root))?.focus();
 }
 

@@ -184,8 +184,7 @@ async function solve(root, rerender) {
   changed();
   settled();
   rerender();
-  // The answer is drawn afresh: keep the technician's place (the focus was
-  // left on the page's body), Tab goes on into the answer.
+  // Drawn afresh: keep the technician's place; Tab goes on into the answer.
   root.querySelector("button.solve")?.focus();
 }
 

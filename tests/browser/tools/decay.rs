@@ -5,7 +5,7 @@ use serde_json::json;
 
 use super::{
     answer_text, message_at, parsed, paste, press_and_wait, record_requests, reload, sent_to,
-    start_over, start_over_accepted, values,
+    stale, start_over, start_over_accepted, values,
 };
 use crate::harness::form::{choose, field, type_into};
 use crate::harness::job::shots;
@@ -221,4 +221,14 @@ pub async fn a_heading_is_passed_over_and_a_time_column_refused(stand: &Stand) {
         shown.contains('±') && shown.contains("95 % half-width"),
         "{shown}"
     );
+
+    // A field changed after the answer: the answer is greyed as the one to the
+    // input before, across a reload too, until it is sent again.
+    assert_eq!(stale(b, "decay").await, Some(false));
+    type_into(b, &here("offset"), "0,02").await;
+    assert_eq!(stale(b, "decay").await, Some(true), "after a change");
+    reload(b, "decay").await;
+    assert_eq!(stale(b, "decay").await, Some(true), "after a reload");
+    press_and_wait(b, "decay", "button.identify", ".decay-result").await;
+    assert_eq!(stale(b, "decay").await, Some(false), "sent again");
 }

@@ -80,6 +80,27 @@ async fn message_at(b: &Browser, css: &str) -> String {
     got.as_str().unwrap_or_default().to_string()
 }
 
+/// Whether the answer shown on `#step-{step}` is greyed as the answer to what
+/// was typed before a change, and says so; `None` when no answer is shown.
+async fn stale(b: &Browser, step: &str) -> Option<bool> {
+    let got = js(
+        b,
+        &format!(
+            "const o = document.querySelector('#step-{step} .{step}-out'); const h = o && o.querySelector('h3'); \
+             if (!h) return null; \
+             const said = getComputedStyle(h, '::after').content.includes('before your last change'); \
+             const grey = Number(getComputedStyle(o).opacity) < 1; \
+             return o.classList.contains('stale') && said && grey ? true : !o.classList.contains('stale') && !said && !grey ? false : 'mixed'"
+        ),
+    )
+    .await;
+    match got {
+        Value::Null => None,
+        Value::Bool(x) => Some(x),
+        other => panic!("the {step} answer is half greyed: {other}"),
+    }
+}
+
 /// Reload the page and wait until `step` is shown again (the address keeps it).
 async fn reload(b: &Browser, step: &str) {
     b.client.refresh().await.expect("the page reloads");

@@ -4,7 +4,7 @@
 use serde_json::{json, Value};
 
 use super::{
-    answer_text, parsed, press_and_wait, record_requests, reload, sent_to, start_over,
+    answer_text, parsed, press_and_wait, record_requests, reload, sent_to, stale, start_over,
     start_over_accepted, values,
 };
 use crate::harness::form::{choose, field, type_into};
@@ -254,6 +254,13 @@ pub async fn a_heading_and_degree_signs_are_passed_over(stand: &Stand) {
     assert!(
         shown.contains(&format!("{residual:.0} g·mm")),
         "{shown} for {said}"
+    );
+    assert_eq!(stale(b, "residual").await, Some(false));
+    type_into(b, &here("plane"), "left").await;
+    assert_eq!(
+        stale(b, "residual").await,
+        Some(true),
+        "a field changed after the answer"
     );
 
     // A refusal names the line a reading was pasted on, not its index from 0.

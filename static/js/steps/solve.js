@@ -168,10 +168,14 @@ async function solve(root, rerender) {
     root.removeAttribute("aria-busy");
   };
   banner(root, "error", "");
+  const id = state.id;
   try {
-    const stored = await api.solve(state.id, solveOptions());
-    state.solution = stored && stored.solution ? stored.solution : stored;
-    state.solutionDate = (stored && stored.created_at) || null;
+    const stored = await api.solve(id, solveOptions());
+    // Not if another job was opened meanwhile: the answer is stored with its own.
+    if (state.id === id) {
+      state.solution = stored && stored.solution ? stored.solution : stored;
+      state.solutionDate = (stored && stored.created_at) || null;
+    }
   } catch (err) {
     settled();
     if (button) {

@@ -45,13 +45,13 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
         json!({ "session": session, "options": { "max_mass_g": { plane.clone(): limit } } }),
     )
     .await;
-    // The page's next answer is held back for a second and a half: the old
+    // The page's next answer is held back for three seconds: the old
     // one is on the page meanwhile, as on a slow stand PC.
     js(
         b,
         "const f = window.fetch; \
          window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
-           ? new Promise((ok) => setTimeout(() => ok(r), 1500)) : r); \
+           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
          return true",
     )
     .await;

@@ -18,95 +18,63 @@
 //! pasted on its page is answered as the service answers it (`decay`), and
 //! so is a residual-unbalance check (`residual`).
 
-mod bound;
-mod conventions;
-mod critical;
-mod damping;
-mod dates;
-mod decay;
-mod pooled;
+mod answer;
+mod identification;
+mod job;
 mod residual;
-mod retry;
-mod samples;
-mod trim;
-mod units;
-mod unreachable;
-mod walk;
-mod warnings;
 
-/// Jeffcott rotors for the identification scenes (`damping`, `critical`).
-#[path = "../../identification/support.rs"]
-mod jeffcott;
-
-use crate::harness::stand::{post, Stand};
-
-/// A 150 kg Jeffcott rotor critical at 2450 rpm with damping ratio `zeta`,
-/// read in µm pk-pk at `speeds` with `noise` (relative, drawn with `seed`):
-/// its session, and what `POST /api/v1/identify/rotor` says of it, to
-/// compare the page with.
-async fn identified(
-    stand: &Stand,
-    zeta: f64,
-    speeds: &[f64],
-    noise: f64,
-    seed: u64,
-) -> (serde_json::Value, serde_json::Value) {
-    use fieldbal::balancing::model::Unit;
-    let rotor = jeffcott::Jeffcott::with(150.0, 2450.0, zeta);
-    let session = jeffcott::session(&[rotor], speeds, Unit::UmPp, noise, seed);
-    let session = serde_json::to_value(session).unwrap();
-    let body = serde_json::json!({ "session": session });
-    let said = post(stand, "/api/v1/identify/rotor", body).await;
-    (session, said)
-}
+use crate::harness::stand::Stand;
 
 /// One browser for every scene (CI time); each scene gets a new server and
 /// database and a freshly loaded form (`Stand::renew`).
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_form_says_what_the_service_means() {
     let mut stand = Stand::start().await;
-    decay::a_pasted_free_decay_is_answered_as_the_service_says(&stand).await;
+    identification::decay::a_pasted_free_decay_is_answered_as_the_service_says(&stand).await;
     stand.renew().await;
     residual::a_residual_check_is_answered_as_the_service_says(&stand).await;
     stand.renew().await;
-    damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
+    identification::damping::an_unresolved_damping_is_shown_as_a_bound(&stand).await;
     stand.renew().await;
-    critical::a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(&stand).await;
+    identification::critical::a_critical_outside_the_speeds_measured_is_shown_as_extrapolated(
+        &stand,
+    )
+    .await;
     stand.renew().await;
-    critical::a_critical_speed_is_shown_with_its_half_width(&stand).await;
+    identification::critical::a_critical_speed_is_shown_with_its_half_width(&stand).await;
     stand.renew().await;
-    dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
+    answer::dates::a_solution_date_is_in_the_format_of_the_lists(&stand).await;
     stand.renew().await;
-    trim::a_trim_job_from_a_machine_says_so_at_its_set_up(&stand).await;
+    job::trim::a_trim_job_from_a_machine_says_so_at_its_set_up(&stand).await;
     stand.renew().await;
-    trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
+    job::trim::a_trim_job_with_supplied_coefficients_says_so_at_its_set_up(&stand).await;
     stand.renew().await;
-    trim::a_trim_jobs_run_check_names_its_coefficients(&stand).await;
+    job::trim::a_trim_jobs_run_check_names_its_coefficients(&stand).await;
     stand.renew().await;
-    trim::a_trims_results_csv_says_from_run_and_total(&stand).await;
+    job::trim::a_trims_results_csv_says_from_run_and_total(&stand).await;
     stand.renew().await;
-    warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
+    answer::warnings::every_solve_warning_is_shown_with_its_message_beside_its_plane(&stand).await;
     stand.renew().await;
-    conventions::every_angle_of_the_answer_and_report_says_its_convention(&stand).await;
+    answer::conventions::every_angle_of_the_answer_and_report_says_its_convention(&stand).await;
     stand.renew().await;
-    units::every_amplitude_of_the_answer_says_its_unit(&stand).await;
+    answer::units::every_amplitude_of_the_answer_says_its_unit(&stand).await;
     stand.renew().await;
-    units::the_machine_pages_jobs_say_their_unit(&stand).await;
+    answer::units::the_machine_pages_jobs_say_their_unit(&stand).await;
     stand.renew().await;
-    units::figures_over_mixed_units_say_so(&stand).await;
+    answer::units::figures_over_mixed_units_say_so(&stand).await;
     stand.renew().await;
-    units::a_limit_per_unit_when_sensors_mix_units(&stand).await;
+    answer::units::a_limit_per_unit_when_sensors_mix_units(&stand).await;
     stand.renew().await;
-    pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
+    job::pooled::coefficients_from_jobs_that_disagree_say_so(&stand).await;
     stand.renew().await;
-    unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;
+    job::unreachable::a_run_typed_while_the_service_is_away_is_kept_and_stored_later(&stand).await;
     stand.renew().await;
-    samples::readings_with_samples_say_so_in_the_grid(&stand).await;
+    answer::samples::readings_with_samples_say_so_in_the_grid(&stand).await;
     stand.renew().await;
-    bound::a_limit_a_twin_plane_makes_up_for_is_not_called_costly(&stand).await;
+    answer::bound::a_limit_a_twin_plane_makes_up_for_is_not_called_costly(&stand).await;
     stand.renew().await;
-    retry::a_store_that_half_succeeded_is_not_taken_for_another_tab(&stand).await;
+    job::retry::a_store_that_half_succeeded_is_not_taken_for_another_tab(&stand).await;
     stand.renew().await;
-    walk::what_a_technician_reads_walking_a_job(&stand).await;
+    job::walk::what_a_technician_reads_walking_a_job(&stand).await;
     stand.stop().await;
 }

@@ -7,12 +7,12 @@
 
 use serde_json::json;
 
-use super::conventions::with_a_check_run;
 use crate::harness::form::field;
 use crate::harness::stand::machine_with_coefficients;
 use crate::harness::stand::{example_session, get, open_at_solve, post, Stand};
 use crate::harness::steps::js_async;
 use crate::reopened::reopen_elsewhere;
+use crate::said::answer::conventions::with_a_check_run;
 
 /// The trim job begun on the machine page: the set-up names the machine and
 /// its coefficients' version (the latest, as the solve will use).

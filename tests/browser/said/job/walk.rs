@@ -13,11 +13,11 @@
 
 use serde_json::json;
 
-use super::conventions::with_a_check_run;
 use crate::harness::stand::{
     example_session, machine_with_coefficients, open_at_solve, post, Stand,
 };
 use crate::harness::steps::js;
+use crate::said::answer::conventions::with_a_check_run;
 
 /// The header cells of the first table matching `css`.
 async fn headers(b: &crate::harness::Browser, css: &str) -> Vec<String> {

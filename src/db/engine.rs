@@ -55,7 +55,10 @@ pub fn redacted(url: &str) -> String {
 /// The file an SQLite `url` (`sqlite://fieldbal.db`, `sqlite:///var/…`, a plain
 /// path) opens, made absolute against the working directory; `None` for
 /// PostgreSQL and in-memory databases. Said at start, since a relative
-/// default lands in whatever directory the service was started from.
+/// default lands in whatever directory the service was started from. A URL's
+/// path is percent-decoded, as sqlx decodes it to open the file
+/// (`sqlite:///tmp/a%20b/f.db` opens `/tmp/a b/f.db`); a plain path is the
+/// name as given.
 pub fn sqlite_file(url: &str) -> Option<std::path::PathBuf> {
     if Engine::of_url(url) != Engine::Sqlite || url.contains(":memory:") {
         return None;
@@ -64,10 +67,68 @@ pub fn sqlite_file(url: &str) -> Option<std::path::PathBuf> {
         .strip_prefix("sqlite://")
         .or_else(|| url.strip_prefix("sqlite:"))
     {
-        Some(rest) => rest.split('?').next().unwrap_or(rest),
-        None => url,
+        Some(rest) => {
+            let (path, query) = rest.split_once('?').unwrap_or((rest, ""));
+            if query.split('&').any(|p| p == "mode=memory") {
+                return None;
+            }
+            percent_decoded(path)?
+        }
+        None => url.into(),
     };
-    std::path::absolute(Path::new(path)).ok()
+    std::path::absolute(Path::new(&path)).ok()
+}
+
+/// `text` with each `%XX` replaced by its byte; `None` when the bytes are not
+/// UTF-8 (sqlx refuses such a URL).
+fn percent_decoded(text: &str) -> Option<String> {
+    let bytes = text.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        let hex = |b: u8| char::from(b).to_digit(16);
+        match (bytes[i], bytes.get(i + 1), bytes.get(i + 2)) {
+            (b'%', Some(&h), Some(&l)) if hex(h).is_some() && hex(l).is_some() => {
+                let byte = hex(h).and_then(|h| hex(l).map(|l| h * 16 + l))?;
+                out.push(u8::try_from(byte).ok()?);
+                i += 3;
+            }
+            (b, _, _) => {
+                out.push(b);
+                i += 1;
+            }
+        }
+    }
+    String::from_utf8(out).ok()
+}
+
+#[cfg(test)]
+mod file_tests {
+    use super::sqlite_file;
+    use std::path::Path;
+
+    /// The start log names the file SQLite opens: sqlx percent-decodes the
+    /// URL's path, so `%20` is a space in the file's name.
+    #[test]
+    fn an_sqlite_url_names_the_decoded_file() {
+        assert_eq!(
+            sqlite_file("sqlite:///tmp/a%20b/f%23.db?mode=rwc").as_deref(),
+            Some(Path::new("/tmp/a b/f#.db"))
+        );
+        assert_eq!(
+            sqlite_file("sqlite:/tmp/a b/f.db").as_deref(),
+            Some(Path::new("/tmp/a b/f.db"))
+        );
+        // A plain path is the file's name as it is, `%` included.
+        assert_eq!(
+            sqlite_file("/tmp/a%20b.db").as_deref(),
+            Some(Path::new("/tmp/a%20b.db"))
+        );
+        // No file at all.
+        assert_eq!(sqlite_file("sqlite://a.db?mode=memory"), None);
+        assert_eq!(sqlite_file("sqlite::memory:"), None);
+        assert_eq!(sqlite_file("postgres://u@h/db"), None);
+    }
 }
 
 /// How long an SQLite connection waits for another process's writer.

@@ -28,6 +28,7 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Run the HTTP service and the web form.
+    #[command(after_help = SERVE_LOGGING)]
     Serve(crate::http::ServeArgs),
     /// Solve a session file offline and print the solution as JSON.
     Solve {
@@ -45,7 +46,7 @@ pub enum Command {
         /// Request JSON, as posted to the endpoint (`speed_rpm`, `trial`, `journal_load_kg`, `readings`, …); `-` for standard input.
         file: PathBuf,
         #[command(flatten)]
-        input: InputArgs,
+        input: FileArgs,
     },
     /// Pool the runs of several session files into one set of influence
     /// coefficients (each session against its own reference run) and print them as JSON.
@@ -60,25 +61,61 @@ pub enum Command {
         input: InputArgs,
     },
     /// Identify model coefficients from a request file (the endpoint's body) and print the answer as JSON.
-    Identify {
-        #[arg(value_enum)]
-        what: IdentifyWhat,
-        /// The request JSON, as posted to `/api/v1/identify/<what>`; `-` for standard input.
+    #[command(subcommand)]
+    Identify(Identify),
+}
+
+/// What `fieldbal serve --help` says of logging, the one setting without a flag.
+const SERVE_LOGGING: &str = "Logging: to standard error, a line per request with its x-request-id. \
+The variable RUST_LOG sets how much (tracing's filter syntax): `info` (the default), \
+`warn` (warnings and errors only, no request lines), `debug` (more detail, e.g. each SQL statement), \
+or per module, e.g. RUST_LOG=info,tower_http=debug.";
+
+/// `fieldbal identify WHAT FILE`: only `rotor` reads a session, so only it
+/// takes the session limits (`--max-*`).
+#[derive(Debug, Subcommand)]
+pub enum Identify {
+    /// `identify/rotor`: one-mass rotor from a multi-speed session.
+    Rotor {
+        /// The request JSON, as posted to `/api/v1/identify/rotor`; `-` for standard input.
         file: PathBuf,
         #[command(flatten)]
         input: InputArgs,
     },
+    /// `identify/free-decay`: frequency and damping from a free decay.
+    FreeDecay {
+        /// The request JSON, as posted to `/api/v1/identify/free-decay`; `-` for standard input.
+        file: PathBuf,
+        #[command(flatten)]
+        input: FileArgs,
+    },
+    /// `identify/model`: discrete-model correction.
+    Model {
+        /// The request JSON, as posted to `/api/v1/identify/model`; `-` for standard input.
+        file: PathBuf,
+        #[command(flatten)]
+        input: FileArgs,
+    },
 }
 
-/// What a file command accepts: the service's size limits, with the same
-/// flags, variables and defaults as `fieldbal serve` (README, "Settings"), so
-/// a file the service refuses is refused here too, and a job the service was
-/// set up to accept (limits raised) can be run offline.
+/// What every file command accepts: the service's body limit, with the same
+/// flag, variable and default as `fieldbal serve` (README, "Settings").
+#[derive(Debug, Clone, clap::Args)]
+pub struct FileArgs {
+    /// Largest file read, bytes (checked before the file is parsed).
+    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = crate::http::DEFAULT_BODY_LIMIT, value_parser = crate::http::args::positive_usize)]
+    pub body_limit_bytes: usize,
+}
+
+/// What a file command that reads sessions accepts: the body limit and the
+/// service's session size limits, with the same flags, variables and defaults
+/// as `fieldbal serve`, so a file the service refuses is refused here too,
+/// and a job the service was set up to accept (limits raised) can be run
+/// offline.
 #[derive(Debug, Clone, clap::Args)]
 pub struct InputArgs {
-    /// Largest file read, bytes (checked before the file is parsed).
-    #[arg(long, env = "FIELDBAL_BODY_LIMIT_BYTES", default_value_t = crate::http::DEFAULT_BODY_LIMIT)]
-    pub body_limit_bytes: usize,
+    #[command(flatten)]
+    pub file: FileArgs,
     #[command(flatten)]
     pub session: crate::http::SessionLimitArgs,
 }
@@ -88,18 +125,15 @@ impl InputArgs {
     /// size limit.
     fn apply(&self) -> usize {
         crate::balancing::limits::Limits::configure(self.session.limits());
-        self.body_limit_bytes
+        self.file.body_limit_bytes
     }
 }
 
 /// Which identification `fieldbal identify` runs.
-#[derive(Debug, Clone, Copy, clap::ValueEnum)]
-pub enum IdentifyWhat {
-    /// `identify/rotor`: one-mass rotor from a multi-speed session.
+#[derive(Debug, Clone, Copy)]
+enum IdentifyWhat {
     Rotor,
-    /// `identify/free-decay`: frequency and damping from a free decay.
     FreeDecay,
-    /// `identify/model`: discrete-model correction.
     Model,
 }
 
@@ -115,8 +149,7 @@ pub fn run(cli: Cli) -> ExitCode {
             solve_file(&file, options.as_deref(), max)
         }
         Command::Residual { file, input } => {
-            let max = input.apply();
-            print_result(residual_file(&file, max))
+            print_result(residual_file(&file, input.body_limit_bytes))
         }
         Command::Coefficients {
             files,
@@ -126,8 +159,16 @@ pub fn run(cli: Cli) -> ExitCode {
             let max = input.apply();
             print_result(pool_files(&files, options.as_deref(), max))
         }
-        Command::Identify { what, file, input } => {
-            let max = input.apply();
+        Command::Identify(which) => {
+            let (what, file, max) = match which {
+                Identify::Rotor { file, input } => (IdentifyWhat::Rotor, file, input.apply()),
+                Identify::FreeDecay { file, input } => {
+                    (IdentifyWhat::FreeDecay, file, input.body_limit_bytes)
+                }
+                Identify::Model { file, input } => {
+                    (IdentifyWhat::Model, file, input.body_limit_bytes)
+                }
+            };
             print_result(identify_file(what, &file, max))
         }
     }
@@ -267,4 +308,113 @@ fn pool_files(
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let pooled = balancing::job::pool::pool_checked(&names, &checked, &opts)?;
     Ok(serde_json::to_value(pooled).expect("coefficients serialise"))
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::{CommandFactory, Parser};
+
+    use super::Cli;
+
+    fn parse(args: &[&str]) -> Result<Cli, String> {
+        let mut all = vec!["fieldbal"];
+        all.extend_from_slice(args);
+        Cli::try_parse_from(all).map_err(|e| e.to_string())
+    }
+
+    fn long_help(path: &[&str]) -> String {
+        let mut cmd = Cli::command();
+        let mut sub = &mut cmd;
+        for name in path {
+            sub = sub.find_subcommand_mut(name).expect("a subcommand");
+        }
+        sub.render_long_help().to_string()
+    }
+
+    /// An operator who wants more (or less) logging reads `serve --help`:
+    /// the log filter is the one setting without a flag.
+    #[test]
+    fn serve_help_says_how_to_set_the_log_level() {
+        let help = long_help(&["serve"]);
+        assert!(help.contains("RUST_LOG"), "{help}");
+        assert!(help.contains("debug"), "{help}");
+    }
+
+    /// Each file command takes the limits it applies, and no others: the
+    /// residual check reads no session, identify's free decay and model
+    /// correction none either; only `identify rotor`, `solve` and
+    /// `coefficients` validate sessions against the `--max-*` limits.
+    #[test]
+    fn each_file_command_takes_only_the_limits_it_applies() {
+        let limit = ["--max-planes", "2"];
+        let ok = |args: &[&str]| {
+            let mut all = args.to_vec();
+            all.extend_from_slice(&limit);
+            parse(&all).map(|_| ())
+        };
+        for args in [
+            &["solve", "f.json"][..],
+            &["coefficients", "a.json", "b.json"],
+            &["identify", "rotor", "f.json"],
+        ] {
+            assert!(ok(args).is_ok(), "{args:?} --max-planes refused");
+        }
+        for args in [
+            &["residual", "f.json"][..],
+            &["identify", "free-decay", "f.json"],
+            &["identify", "model", "f.json"],
+        ] {
+            let err = ok(args).expect_err("a limit it does not apply accepted");
+            assert!(err.contains("--max-planes"), "{args:?}: {err}");
+        }
+        for path in [
+            &["residual"][..],
+            &["identify", "free-decay"],
+            &["identify", "model"],
+        ] {
+            let help = long_help(path);
+            assert!(!help.contains("--max-"), "{path:?}: {help}");
+            assert!(help.contains("--body-limit-bytes"), "{path:?}: {help}");
+        }
+        // Every documented invocation still parses.
+        for args in [
+            &["residual", "-"][..],
+            &["identify", "rotor", "-"],
+            &["identify", "free-decay", "-"],
+            &["identify", "model", "f.json", "--body-limit-bytes", "10"],
+            &["coefficients", "a.json", "--options", "o.json"],
+            &[
+                "solve",
+                "big.json",
+                "--max-planes",
+                "267",
+                "--max-sensors",
+                "267",
+                "--body-limit-bytes",
+                "8000000",
+            ],
+        ] {
+            assert!(parse(args).is_ok(), "{args:?}: {:?}", parse(args).err());
+        }
+    }
+
+    /// A body limit of 0 refuses every file; the file commands refuse it at
+    /// once, naming the flag, as `fieldbal serve` does.
+    #[test]
+    fn a_zero_body_limit_is_refused_naming_the_flag() {
+        for args in [
+            &["solve", "f.json"][..],
+            &["residual", "f.json"],
+            &["coefficients", "a.json"],
+            &["identify", "free-decay", "f.json"],
+        ] {
+            let mut all = args.to_vec();
+            all.extend_from_slice(&["--body-limit-bytes", "0"]);
+            let err = parse(&all).expect_err("0 accepted");
+            assert!(
+                err.contains("--body-limit-bytes") && err.contains("at least 1"),
+                "{args:?}: {err}"
+            );
+        }
+    }
 }

@@ -282,8 +282,9 @@ pub async fn serve(
 }
 
 #[utoipa::path(get, path = "/healthz", tag = "service",
+    operation_id = "healthz", summary = "Readiness: whether the database can be written",
     responses((status = 200, description = "Ready: the database can be written"),
-              (status = 503, description = "Not ready: the database cannot be written (read-only, full disk)", body = error::ErrorBody)))]
+              (status = 503, description = "Not ready: the database cannot be written (`not_ready`: read-only, full disk)", body = error::ErrorBody)))]
 async fn healthz(State(state): State<AppState>) -> Result<Json<serde_json::Value>, ApiError> {
     crate::db::health::probe(&state.db).await.map_err(|e| {
         tracing::error!(error = %e, "health probe: the database cannot be written");

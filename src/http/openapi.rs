@@ -1,5 +1,6 @@
 //! The OpenAPI document, generated from the handlers' `#[utoipa::path]` annotations.
 
+use axum::http::Method;
 use axum::Json;
 use utoipa::openapi::path::{Operation, PathItem};
 use utoipa::openapi::response::ResponseBuilder;
@@ -52,6 +53,7 @@ use super::{identify, machines, residual, runs, sessions, solve, trial_weights};
 pub struct ApiDoc;
 
 #[utoipa::path(get, path = "/api/v1/openapi.json", tag = "service",
+    operation_id = "openapi_document", summary = "This OpenAPI document",
     responses((status = 200, description = "This document"), super::responses::QueryRefused))]
 pub async fn document(
     params: Result<
@@ -76,6 +78,9 @@ enum Scope {
     Api,
     /// Under `/api/` with a request body (POST, PUT, PATCH).
     Body,
+    /// A request that changes the store (`access::is_write`): what a
+    /// read-only token is refused.
+    Write,
 }
 
 const EDGE_ANSWERS: &[(&str, &str, Scope)] = &[
@@ -92,7 +97,7 @@ const EDGE_ANSWERS: &[(&str, &str, Scope)] = &[
     (
         "403",
         "A read-only token on a request that changes the store",
-        Scope::Api,
+        Scope::Write,
     ),
     (
         "408",
@@ -127,10 +132,15 @@ const EDGE_ANSWERS: &[(&str, &str, Scope)] = &[
     ),
     (
         "503",
-        "Too many open connections; retry after the Retry-After seconds",
+        TOO_MANY_CONNECTIONS,
         Scope::Every,
     ),
 ];
+
+/// The edge's 503, which any operation may answer: added to an operation's
+/// own 503 row, or the row itself where the handler sends no 503.
+const TOO_MANY_CONNECTIONS: &str =
+    "Too many open connections (`too_many_connections`): retry after `Retry-After` seconds";
 
 impl Modify for EdgeAnswers {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
@@ -146,40 +156,50 @@ impl Modify for EdgeAnswers {
         ]);
         for (path, item) in openapi.paths.paths.iter_mut() {
             let api = path.starts_with("/api/");
-            for (body, op) in operations(item) {
+            for (method, op) in operations(item) {
                 if !api {
                     op.security = Some(Vec::new());
                 }
+                let body = [Method::POST, Method::PUT, Method::PATCH].contains(&method);
                 for (status, description, scope) in EDGE_ANSWERS {
                     let applies = match scope {
                         Scope::Every => true,
                         Scope::Api => api,
                         Scope::Body => api && body,
+                        Scope::Write => api && super::edge::access::is_write(&method, path),
                     };
                     if !applies {
                         continue;
                     }
-                    op.responses
-                        .responses
-                        .entry(status.to_string())
-                        .or_insert_with(|| RefOr::T(error_response(description)));
+                    match op.responses.responses.entry(status.to_string()) {
+                        std::collections::btree_map::Entry::Vacant(v) => {
+                            v.insert(RefOr::T(error_response(description)));
+                        }
+                        // The handler's own 503s, and the edge's beside them.
+                        std::collections::btree_map::Entry::Occupied(mut o) if *status == "503" => {
+                            if let RefOr::T(own) = o.get_mut() {
+                                own.description = format!("{}; or: {description}", own.description);
+                            }
+                        }
+                        std::collections::btree_map::Entry::Occupied(_) => {}
+                    }
                 }
             }
         }
     }
 }
 
-/// Each operation of a path with whether it carries a request body.
-fn operations(item: &mut PathItem) -> impl Iterator<Item = (bool, &mut Operation)> {
+/// Each operation of a path with its method.
+fn operations(item: &mut PathItem) -> impl Iterator<Item = (Method, &mut Operation)> {
     [
-        (false, item.get.as_mut()),
-        (true, item.post.as_mut()),
-        (true, item.put.as_mut()),
-        (true, item.patch.as_mut()),
-        (false, item.delete.as_mut()),
+        (Method::GET, item.get.as_mut()),
+        (Method::POST, item.post.as_mut()),
+        (Method::PUT, item.put.as_mut()),
+        (Method::PATCH, item.patch.as_mut()),
+        (Method::DELETE, item.delete.as_mut()),
     ]
     .into_iter()
-    .filter_map(|(write, op)| op.map(|op| (write, op)))
+    .filter_map(|(method, op)| op.map(|op| (method, op)))
 }
 
 fn error_response(description: &str) -> utoipa::openapi::Response {

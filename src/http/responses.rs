@@ -49,13 +49,33 @@ pub enum PageRefused {
     OutOfRange(ErrorBody),
 }
 
-/// Every solve slot taken (`http::work`).
+/// Every solve slot taken (`http::work`). The edge's 503 (too many
+/// connections) is added to every operation's 503 row (`openapi::EdgeAnswers`).
 #[derive(IntoResponses)]
 #[response(
     status = 503,
-    description = "Every solver busy: retry after `Retry-After` seconds"
+    description = "Every solver busy (`busy`): retry after `Retry-After` seconds; nothing was computed or stored"
 )]
 pub struct SolverBusy(pub ErrorBody);
+
+/// The database cannot be reached or written (`StoreError::Storage`: a
+/// read-only file, an I/O error, a PostgreSQL server down), for an operation
+/// that reads or writes the store.
+#[derive(IntoResponses)]
+#[response(
+    status = 503,
+    description = "The database cannot be reached or written (`storage_unavailable`); nothing was stored"
+)]
+pub struct StoreUnavailable(pub ErrorBody);
+
+/// [`SolverBusy`] or [`StoreUnavailable`], for a solve that reads or
+/// writes the store (one row per status in the document).
+#[derive(IntoResponses)]
+#[response(
+    status = 503,
+    description = "Every solver busy (`busy`: retry after `Retry-After` seconds), or the database cannot be reached or written (`storage_unavailable`); nothing was stored"
+)]
+pub struct SolverOrStoreUnavailable(pub ErrorBody);
 
 /// A write that met a full disk (`StoreError::Storage`, `db::health::is_full`).
 #[derive(IntoResponses)]

@@ -24,6 +24,7 @@ async fn blocking<T: Send + 'static>(
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/rotor", tag = "identification",
+    operation_id = "identify_rotor", summary = "One-mass rotor model from a multi-speed session",
     request_body = RotorRequest,
     responses(
         (status = 200, description = "Per sensor and plane: critical speed and its resolution (`critical_speed_resolution_rpm`, 95 %), damping ratio and its resolution, API 684 amplification factor and separation margin; a damping ratio within its resolution of zero is given as an upper bound (`damping_ratio_bound`), the factor as a lower one, with a `damping_unresolved` warning and no damping or cross-coupling coefficient; these come with their 95 % resolutions, or not at all when their split is unresolved (`damping_split_unresolved`)", body = RotorIdentification),
@@ -41,6 +42,7 @@ pub async fn rotor(
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/free-decay", tag = "identification",
+    operation_id = "identify_free_decay", summary = "Natural frequency and damping from a free decay",
     request_body = FreeDecayRequest,
     responses(
         (status = 200, description = "Natural frequency (`frequency_hz`: the undamped ω0/2π; `damped_frequency_hz` the frequency of the decaying oscillation, `undamped_frequency_hz` = `frequency_hz`), damping (`damping_ratio`, viscous only), the 95 % resolutions of both (viscous), decrement, amplitude and phase, the `offset` the record sits on (fitted, or the request's), and `warnings` (`few_samples_per_period`; `clipped`, the record flat at its largest or smallest value where the fitted decay goes on past it)", body = FreeDecay),
@@ -56,6 +58,7 @@ pub async fn free_decay(
 }
 
 #[utoipa::path(post, path = "/api/v1/identify/model", tag = "identification",
+    operation_id = "identify_model", summary = "Correct a discrete model from measured modes",
     request_body = ModelRequest,
     responses(
         (status = 200, description = "The corrected parameters and the corrected model's frequencies", body = ModelCorrection),

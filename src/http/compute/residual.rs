@@ -9,6 +9,7 @@ use crate::http::extract::JsonBody;
 use crate::http::responses::{BodyRefused, MalformedJson};
 
 #[utoipa::path(post, path = "/api/v1/residual-unbalance", tag = "acceptance",
+    operation_id = "residual_unbalance", summary = "API 617/684 residual-unbalance check (nothing stored)",
     request_body = ResidualRequest,
     responses(
         (status = 200, description = "The exact residual unbalance, the allowable, pass/fail and API's worksheet beside it", body = ResidualCheck),

@@ -13,7 +13,10 @@ use crate::db::{self, StoreError, StoredSolution};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::{JsonBody, OptionsBody};
 use crate::http::headers::{self, Page};
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, SolverBusy, StorageFull};
+use crate::http::responses::{
+    BodyRefused, MalformedJson, PageRefused, SolverOrStoreUnavailable, StorageFull,
+    StoreUnavailable,
+};
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
@@ -62,13 +65,14 @@ async fn solve_blocking(
 }
 
 #[utoipa::path(post, path = "/api/v1/solve", tag = "solve",
+    operation_id = "solve", summary = "Correction weights for a session (nothing stored)",
     request_body = SolveRequest,
     responses(
         (status = 200, description = "The correction", body = Solution),
         MalformedJson,
         BodyRefused,
         (status = 422, description = "Invalid or unsolvable session or options, or a session over the size limits (`too_large`)", body = ErrorBody),
-        SolverBusy,
+        SolverOrStoreUnavailable,
     ))]
 pub async fn solve(
     State(state): State<AppState>,
@@ -86,6 +90,7 @@ pub async fn solve(
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
+    operation_id = "create_solution", summary = "Solve a stored session and store the solution",
     params(("id" = String, Path, description = "Session id"),
            ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and options answers the first answer again and stores nothing new")),
     request_body(content = SolveOptions, description = "Solve options; an empty body means the defaults"),
@@ -95,7 +100,7 @@ pub async fn solve(
         (status = 404, description = "No such session", body = ErrorBody),
         BodyRefused,
         (status = 422, description = "Invalid options (named without `options.`), or the session cannot be solved yet (named `session.…`; a trim job with no coefficient options is solved with its `trim`'s, a fault in them named `session.trim.…`)", body = ErrorBody),
-        SolverBusy,
+        SolverOrStoreUnavailable,
         StorageFull,
     ))]
 pub async fn create_solution(
@@ -130,12 +135,14 @@ pub async fn create_solution(
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}/solutions", tag = "solve",
+    operation_id = "list_solutions", summary = "List a session's stored solutions, oldest first",
     params(("id" = String, Path, description = "Session id"), Page),
     responses(
         (status = 200, description = "A page of the stored solutions, oldest first (limit 1 to 100, default 20)", body = Vec<StoredSolution>,
          headers(("X-Total-Count" = i64, description = "Solutions in all"))),
         PageRefused,
         (status = 404, description = "No such session", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn list_solutions(
     State(state): State<AppState>,

@@ -12,13 +12,14 @@ use crate::balancing::fit::trial::{suggest, TrialRequest, TrialSuggestion};
 use crate::balancing::model::Conventions;
 use crate::http::error::ErrorBody;
 use crate::http::extract::JsonBody;
-use crate::http::responses::{BodyRefused, MalformedJson, SolverBusy};
+use crate::http::responses::{BodyRefused, MalformedJson, SolverOrStoreUnavailable};
 use crate::http::solve::within_solve_request;
 use crate::http::store::coefficients_from;
 use crate::http::work::Refused;
 use crate::http::AppState;
 
 #[utoipa::path(post, path = "/api/v1/trial-weights", tag = "solve",
+    operation_id = "trial_weights", summary = "Suggest a trial weight per plane (nothing stored)",
     request_body = TrialRequest,
     description = "A trial weight per selected plane that should move the 1X vibration by about 30 % \
 (the change field practice asks of a trial run, e.g. Acoem's 'Balancing How To #2: selecting a proper trial weight'). \
@@ -39,7 +40,7 @@ With a kit on the plane: the stack of kit weights (at most max_per_place) at one
         MalformedJson,
         BodyRefused,
         (status = 422, description = "Invalid session or options, a solve option sizing does not use (`unused_option`, naming it: only `planes`, `sensors`, `speeds_rpm`, `row_weights`, `influence_coefficients` and `coefficients_from` are taken), or nothing to size a trial weight from", body = ErrorBody),
-        SolverBusy,
+        SolverOrStoreUnavailable,
     ))]
 pub async fn trial_weights(
     State(state): State<AppState>,

@@ -20,7 +20,9 @@ use crate::db::{idempotency, StoreError};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, invalid_query};
-use crate::http::responses::{MalformedJson, PageRefused, SolverBusy, StorageFull};
+use crate::http::responses::{
+    MalformedJson, PageRefused, SolverOrStoreUnavailable, StorageFull, StoreUnavailable,
+};
 use crate::http::runs::encode_segment;
 use crate::http::sessions::ListParams;
 use crate::http::work::Refused;
@@ -65,6 +67,7 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
 }
 
 #[utoipa::path(post, path = "/api/v1/machines", tag = "machines",
+    operation_id = "create_machine", summary = "Create a machine",
     request_body = NewMachine,
     responses(
         (status = 201, description = "Stored", body = machines::Machine,
@@ -73,6 +76,7 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
         (status = 409, description = "A machine with this id exists", body = ErrorBody),
         (status = 422, description = "Invalid machine, or an Idempotency-Key used for another request", body = ErrorBody),
         StorageFull,
+        StoreUnavailable,
     ),
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")))]
 pub async fn create(
@@ -102,10 +106,12 @@ pub async fn create(
 }
 
 #[utoipa::path(get, path = "/api/v1/machines", tag = "machines",
+    operation_id = "list_machines", summary = "List machines, newest first",
     params(ListParams),
     responses(
         (status = 200, description = "A page of machines, newest first", body = MachineList),
         PageRefused,
+        StoreUnavailable,
     ))]
 pub async fn list(
     State(state): State<AppState>,
@@ -132,12 +138,14 @@ pub struct SessionsPage {
 }
 
 #[utoipa::path(get, path = "/api/v1/machines/{id}", tag = "machines",
+    operation_id = "get_machine", summary = "Get a machine with its jobs and coefficient versions",
     params(("id" = String, Path, description = "Machine id"), SessionsPage),
     responses(
         (status = 200, description = "The machine, its sessions (oldest first; every one, or the page `limit` and `offset` ask for) with the summary of their latest solution, and its coefficient versions", body = MachineDetail,
          headers(("X-Total-Count" = i64, description = "The machine's sessions in all"))),
         PageRefused,
         (status = 404, description = "No such machine", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn get(
     State(state): State<AppState>,
@@ -153,11 +161,13 @@ pub async fn get(
 }
 
 #[utoipa::path(delete, path = "/api/v1/machines/{id}", tag = "machines",
+    operation_id = "delete_machine", summary = "Delete a machine (never its sessions)",
     params(("id" = String, Path, description = "Machine id")),
     responses(
         (status = 204, description = "Deleted with its coefficient versions; its sessions stay"),
         (status = 404, description = "No such machine", body = ErrorBody),
         StorageFull,
+        StoreUnavailable,
     ))]
 pub async fn delete(
     State(state): State<AppState>,
@@ -179,6 +189,7 @@ pub struct PoolRequest {
 }
 
 #[utoipa::path(post, path = "/api/v1/machines/{id}/coefficients", tag = "machines",
+    operation_id = "pool_coefficients", summary = "Pool sessions into the machine's next coefficient version",
     params(("id" = String, Path, description = "Machine id")),
     request_body = PoolRequest,
     responses(
@@ -186,7 +197,7 @@ pub struct PoolRequest {
         MalformedJson,
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
-        SolverBusy,
+        SolverOrStoreUnavailable,
         StorageFull,
     ),
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores no new version")))]
@@ -264,12 +275,14 @@ pub struct VersionParams {
 }
 
 #[utoipa::path(get, path = "/api/v1/machines/{id}/coefficients", tag = "machines",
+    operation_id = "get_coefficients", summary = "Get a machine's stored coefficients (the latest or a version)",
     params(("id" = String, Path, description = "Machine id"), VersionParams),
     responses(
         (status = 200, description = "The coefficient version asked for, or the latest", body = StoredCoefficients),
         (status = 400, description = "An unknown query parameter, or a `version` that is not a whole number", body = ErrorBody),
         (status = 404, description = "No such machine or version", body = ErrorBody),
         (status = 422, description = "A `version` below 1 (`out_of_range`)", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn get_coefficients(
     State(state): State<AppState>,

@@ -16,7 +16,9 @@ use crate::db::{self, RunVersion};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers::{self, Page};
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull};
+use crate::http::responses::{
+    BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull, StoreUnavailable,
+};
 use crate::http::sessions::validate_stored;
 use crate::http::store::created::CreatedAnswer;
 use crate::http::AppState;
@@ -78,6 +80,7 @@ pub(crate) fn encode_segment(s: &str) -> String {
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions/{id}/runs", tag = "runs",
+    operation_id = "append_run", summary = "Append a run to a stored session",
     params(("id" = String, Path, description = "Session id"),
            ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")),
     request_body = Run,
@@ -90,6 +93,7 @@ pub(crate) fn encode_segment(s: &str) -> String {
         BodyRefused,
         (status = 422, description = "The session with this run is invalid", body = ErrorBody),
         StorageFull,
+        StoreUnavailable,
     ))]
 pub async fn append(
     State(state): State<AppState>,
@@ -121,6 +125,7 @@ pub async fn append(
 }
 
 #[utoipa::path(put, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
+    operation_id = "replace_run", summary = "Store a corrected version of a run (the old one is kept)",
     params(("id" = String, Path, description = "Session id"),
            ("run_id" = String, Path, description = "Run id"),
            ("If-Match" = Option<String>, Header, description = "The run's ETag: refuse (412) if the run changed since (compared strongly: a weak tag `W/\"…\"` never matches; a value that is neither `*` nor a list of quoted entity-tags is refused with 400 `invalid_header`)")),
@@ -133,6 +138,7 @@ pub async fn append(
         (status = 412, description = "If-Match names a version that is no longer the run's current one", body = ErrorBody),
         (status = 422, description = "Invalid, or the body's id differs from the path's", body = ErrorBody),
         StorageFull,
+        StoreUnavailable,
     ))]
 pub async fn replace(
     State(state): State<AppState>,
@@ -162,6 +168,7 @@ pub async fn replace(
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}/runs/{run_id}", tag = "runs",
+    operation_id = "get_run", summary = "Get a run's current version",
     params(("id" = String, Path, description = "Session id"),
            ("run_id" = String, Path, description = "Run id")),
     responses(
@@ -169,6 +176,7 @@ pub async fn replace(
          headers(("ETag" = String, description = "The run's version; send it as If-Match with a PUT"))),
         QueryRefused,
         (status = 404, description = "No such session or run", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn get(
     State(state): State<AppState>,
@@ -181,6 +189,7 @@ pub async fn get(
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}/runs/{run_id}/versions", tag = "runs",
+    operation_id = "list_run_versions", summary = "List every version of a run, oldest first",
     params(("id" = String, Path, description = "Session id"),
            ("run_id" = String, Path, description = "Run id"), Page),
     responses(
@@ -188,6 +197,7 @@ pub async fn get(
          headers(("X-Total-Count" = i64, description = "Versions in all"))),
         PageRefused,
         (status = 404, description = "No such session or run", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn versions(
     State(state): State<AppState>,

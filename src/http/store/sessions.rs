@@ -16,7 +16,9 @@ use crate::db::{self, SessionList};
 use crate::http::error::{ApiError, ErrorBody};
 use crate::http::extract::JsonBody;
 use crate::http::headers;
-use crate::http::responses::{BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull};
+use crate::http::responses::{
+    BodyRefused, MalformedJson, PageRefused, QueryRefused, StorageFull, StoreUnavailable,
+};
 use crate::http::store::created::CreatedAnswer;
 use crate::http::work::check_blocking;
 use crate::http::AppState;
@@ -92,6 +94,7 @@ pub fn validate_stored(session: &Session) -> Result<(), InputError> {
 }
 
 #[utoipa::path(post, path = "/api/v1/sessions", tag = "sessions",
+    operation_id = "create_session", summary = "Store a session",
     request_body = Session,
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")),
     responses(
@@ -100,7 +103,7 @@ pub fn validate_stored(session: &Session) -> Result<(), InputError> {
         MalformedJson,
         BodyRefused,
         (status = 422, description = "Invalid session, over the size limits (`too_large`), or an Idempotency-Key used for another request", body = ErrorBody),
-        (status = 503, description = "The database cannot be written", body = ErrorBody),
+        StoreUnavailable,
         (status = 507, description = "The disk is full; nothing was stored", body = ErrorBody),
     ))]
 pub async fn create(
@@ -126,10 +129,12 @@ pub async fn create(
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions", tag = "sessions",
+    operation_id = "list_sessions", summary = "List stored sessions, newest first",
     params(ListParams),
     responses(
         (status = 200, description = "A page of sessions, newest first", body = SessionList),
         PageRefused,
+        StoreUnavailable,
     ))]
 pub async fn list(
     State(state): State<AppState>,
@@ -140,12 +145,14 @@ pub async fn list(
 }
 
 #[utoipa::path(get, path = "/api/v1/sessions/{id}", tag = "sessions",
+    operation_id = "get_session", summary = "Get a stored session",
     params(("id" = String, Path, description = "Session id")),
     responses(
         (status = 200, description = "The session exactly as it would be posted again", body = Session,
          headers(("ETag" = String, description = "Changes whenever the session or any of its runs changes"))),
         QueryRefused,
         (status = 404, description = "No such session", body = ErrorBody),
+        StoreUnavailable,
     ))]
 pub async fn get(
     State(state): State<AppState>,
@@ -159,6 +166,7 @@ pub async fn get(
 }
 
 #[utoipa::path(delete, path = "/api/v1/sessions/{id}", tag = "sessions",
+    operation_id = "delete_session", summary = "Delete a stored session with its runs and solutions",
     params(("id" = String, Path, description = "Session id"),
            ("If-Match" = Option<String>, Header, description = "The session's ETag as read: deleted only if it has not changed since (strong comparison; `*` or no header: unconditionally)")),
     responses(
@@ -167,6 +175,7 @@ pub async fn get(
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 412, description = "The session changed since its ETag was read (or `If-Match` names no ETag of it): nothing deleted", body = ErrorBody),
         StorageFull,
+        StoreUnavailable,
     ))]
 pub async fn delete(
     State(state): State<AppState>,

@@ -83,3 +83,75 @@ async fn the_openapi_document_lists_every_endpoint_and_the_error_body() {
     }
     server.shutdown().await;
 }
+
+/// Every operation, as a client generator and a reader of the document see
+/// it: a one-line `summary`, an `operationId` no other operation has (a
+/// generator names its methods by them: `list` twice, for sessions and
+/// machines, made two methods of one name), a 503 row naming every 503 the
+/// service sends there, and a 403 row only where a read-only token is
+/// refused (a store write; `access::is_write`).
+#[tokio::test]
+async fn every_operation_has_a_summary_a_unique_id_and_its_real_refusals() {
+    let (_dir, server, client) = fresh_server().await;
+    let (status, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    assert_eq!(status, 200);
+    let mut ids = std::collections::BTreeMap::new();
+    let mut faults = Vec::new();
+    for (path, item) in doc["paths"].as_object().unwrap() {
+        for (method, op) in item.as_object().unwrap() {
+            let what = format!("{} {path}", method.to_uppercase());
+            let summary = op["summary"].as_str().unwrap_or_default();
+            if summary.trim().is_empty() || summary.len() > 80 || summary.contains('\n') {
+                faults.push(format!("{what}: summary {summary:?}"));
+            }
+            let id = op["operationId"].as_str().unwrap_or_default().to_string();
+            if let Some(other) = ids.insert(id.clone(), what.clone()) {
+                faults.push(format!("{what}: operationId {id:?} also {other}"));
+            }
+            let unavailable = op["responses"]["503"]["description"]
+                .as_str()
+                .unwrap_or_default();
+            let store = path.starts_with("/api/v1/sessions")
+                || path.starts_with("/api/v1/machines")
+                // `coefficients_from` reads a machine's stored coefficients.
+                || path == "/api/v1/solve"
+                || path == "/api/v1/trial-weights";
+            let solver = [
+                "/api/v1/solve",
+                "/api/v1/trial-weights",
+                "/api/v1/identify/",
+            ]
+            .iter()
+            .any(|p| path.starts_with(p))
+                || (method == "post" && path.ends_with("/solutions"))
+                || (method == "post" && path.ends_with("/coefficients"));
+            let mut codes = vec!["too_many_connections"];
+            if store {
+                codes.push("storage_unavailable");
+            }
+            if solver {
+                codes.push("`busy`");
+            }
+            if path == "/healthz" {
+                codes.push("not_ready");
+            }
+            for code in codes {
+                if !unavailable.contains(code) {
+                    faults.push(format!("{what}: 503 does not name {code}: {unavailable:?}"));
+                }
+            }
+            let write = method != "get"
+                && ![
+                    "/api/v1/solve",
+                    "/api/v1/trial-weights",
+                    "/api/v1/residual-unbalance",
+                ]
+                .contains(&path.as_str())
+                && !path.starts_with("/api/v1/identify/");
+            if op["responses"].get("403").is_some() != write {
+                faults.push(format!("{what}: 403 declared: {}", !write));
+            }
+        }
+    }
+    assert!(faults.is_empty(), "{faults:#?}");
+}

@@ -231,16 +231,18 @@ pub async fn pool_coefficients(
     };
     for (i, s) in loaded.iter().enumerate() {
         if s.machine.as_deref() != Some(id.as_str()) {
-            return Err(InputError::invalid(
-                "other_machine",
-                format!("sessions[{i}]"),
-                format!(
-                    "session '{}' belongs to machine '{}', not '{id}'",
-                    req.sessions[i],
-                    s.machine.as_deref().unwrap_or("(none)")
+            let session = &req.sessions[i];
+            let message = match s.machine.as_deref() {
+                Some(other) => {
+                    format!("session '{session}' belongs to machine '{other}', not '{id}'")
+                }
+                None => format!(
+                    "session '{session}' names no machine: only sessions whose `machine` is '{id}' are pooled for it"
                 ),
-            )
-            .into());
+            };
+            return Err(
+                InputError::invalid("other_machine", format!("sessions[{i}]"), message).into(),
+            );
         }
     }
     let named: Vec<(String, _)> = req.sessions.iter().cloned().zip(loaded).collect();

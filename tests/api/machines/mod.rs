@@ -562,3 +562,32 @@ async fn a_session_without_trial_runs_in_a_pool_is_named_as_adding_nothing() {
         "the same coefficients as without it"
     );
 }
+
+/// A session that names no machine, listed in a machine's pool, is refused
+/// saying so and how to fix it; the message called it a session of machine
+/// '(none)', which reads as a machine with that id.
+#[tokio::test]
+async fn a_session_naming_no_machine_is_refused_saying_it_names_none() {
+    let (_dir, server, client) = fresh_server().await;
+    let rotor = Rotor::new();
+    post(
+        &client,
+        &server.url("/api/v1/machines"),
+        &json!({"id": "M-N"}),
+    )
+    .await;
+    let mut loose = job_session(&rotor, "M-N", true, 0);
+    loose.as_object_mut().unwrap().remove("machine");
+    let loose = store(&client, &server, &loose).await;
+    let url = server.url("/api/v1/machines/M-N/coefficients");
+    let (status, _, body) = post(&client, &url, &json!({"sessions": [loose]})).await;
+    assert_eq!(status, 422, "{body}");
+    assert_eq!(error_of(&body), ("other_machine", Some("sessions[0]")));
+    let message = body["error"]["message"].as_str().unwrap();
+    assert!(
+        message.contains("names no machine")
+            && message.contains("'M-N'")
+            && !message.contains("(none)"),
+        "{message}"
+    );
+}

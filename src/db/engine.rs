@@ -41,15 +41,27 @@ impl Engine {
     }
 }
 
-/// `url` for logs and messages: a PostgreSQL URL without its password.
+/// `url` for logs and messages: a URL without its password (a PostgreSQL
+/// URL's, or one of an engine fieldbal refuses).
 pub fn redacted(url: &str) -> String {
     match url::Url::parse(url) {
-        Ok(mut u) if Engine::of_url(url) == Engine::Postgres && u.password().is_some() => {
+        Ok(mut u) if u.password().is_some() => {
             let _ = u.set_password(Some("***"));
             u.to_string()
         }
         _ => url.to_string(),
     }
+}
+
+/// The scheme of a URL that names neither SQLite nor PostgreSQL
+/// (`mysql://…`, `file://…`): such a URL is refused, not opened as an SQLite
+/// file of that name. A path with `://` inside has no scheme.
+fn unsupported_scheme(url: &str) -> Option<&str> {
+    let (scheme, _) = url.split_once("://")?;
+    let mut chars = scheme.chars();
+    let is_scheme = chars.next().is_some_and(|c| c.is_ascii_alphabetic())
+        && chars.all(|c| c.is_ascii_alphanumeric() || "+-.".contains(c));
+    (is_scheme && !["sqlite", "postgres", "postgresql"].contains(&scheme)).then_some(scheme)
 }
 
 /// The file an SQLite `url` (`sqlite://fieldbal.db`, `sqlite:///var/…`, a plain
@@ -60,7 +72,10 @@ pub fn redacted(url: &str) -> String {
 /// (`sqlite:///tmp/a%20b/f.db` opens `/tmp/a b/f.db`); a plain path is the
 /// name as given.
 pub fn sqlite_file(url: &str) -> Option<std::path::PathBuf> {
-    if Engine::of_url(url) != Engine::Sqlite || url.contains(":memory:") {
+    if Engine::of_url(url) != Engine::Sqlite
+        || url.contains(":memory:")
+        || unsupported_scheme(url).is_some()
+    {
         return None;
     }
     let path = match url
@@ -129,6 +144,44 @@ mod file_tests {
         assert_eq!(sqlite_file("sqlite::memory:"), None);
         assert_eq!(sqlite_file("postgres://u@h/db"), None);
     }
+
+    /// A URL of an engine fieldbal does not speak is refused naming its
+    /// scheme; it was taken for an SQLite path (`mysql://x/y` tried to open
+    /// the file `./mysql:/x/y`, "unable to open database file").
+    #[tokio::test]
+    async fn an_unsupported_database_url_is_refused_naming_its_scheme() {
+        for url in [
+            "mysql://u:secret@h/db",
+            "MariaDB://h/db",
+            "file:///tmp/x.db",
+        ] {
+            let scheme = &url[..url.find("://").unwrap()];
+            assert_eq!(sqlite_file(url), None, "{url}");
+            let e = super::connect(url).await.expect_err(url).to_string();
+            assert!(
+                e.contains(&format!("'{scheme}://'"))
+                    && e.contains("sqlite://")
+                    && e.contains("postgres://"),
+                "{url}: {e}"
+            );
+            assert!(!e.contains("secret"), "{url}: {e}");
+        }
+        // A path with `://` inside is still a path.
+        assert!(sqlite_file("/tmp/a://b.db").is_some());
+    }
+
+    /// A password in any URL is left out of logs and messages.
+    #[test]
+    fn a_password_is_redacted_whatever_the_scheme() {
+        for url in ["postgres://u:secret@h/db", "mysql://u:secret@h/db"] {
+            let shown = super::redacted(url);
+            assert!(
+                !shown.contains("secret") && shown.contains("u:***@h"),
+                "{shown}"
+            );
+        }
+        assert_eq!(super::redacted("sqlite://a.db"), "sqlite://a.db");
+    }
 }
 
 /// How long an SQLite connection waits for another process's writer.
@@ -160,6 +213,14 @@ pub async fn connect_pool(
     setup: Option<Setup>,
 ) -> Result<AnyPool, sqlx::Error> {
     sqlx::any::install_default_drivers();
+    if let Some(scheme) = unsupported_scheme(url) {
+        return Err(sqlx::Error::Configuration(
+            format!(
+                "'{scheme}://' is not a database fieldbal can use: give sqlite://FILE (or a file path) or postgres://USER:PASSWORD@HOST/DB"
+            )
+            .into(),
+        ));
+    }
     match Engine::of_url(url) {
         Engine::Sqlite => {
             let url = sqlite_url(url)?;

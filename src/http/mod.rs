@@ -413,11 +413,19 @@ pub fn serve_main(args: ServeArgs) -> ExitCode {
 
 /// The start-up error for a database that cannot be opened or written.
 fn cannot_write(database: &str, e: &sqlx::Error) -> String {
-    let database = match crate::db::engine::sqlite_file(database) {
-        Some(file) => format!("{database} ({})", file.display()),
-        None => crate::db::engine::redacted(database),
+    let file = crate::db::engine::sqlite_file(database);
+    // SQLite creates the file, never its directory.
+    let missing = file
+        .as_deref()
+        .and_then(std::path::Path::parent)
+        .filter(|dir| !dir.as_os_str().is_empty() && !dir.exists())
+        .map(|dir| format!(" (the directory {} does not exist)", dir.display()))
+        .unwrap_or_default();
+    let database = match file {
+        Some(file) if file.as_os_str() != database => format!("{database} ({})", file.display()),
+        _ => crate::db::engine::redacted(database),
     };
-    let text = e.to_string();
+    let text = format!("{e}{missing}");
     if text.contains("readonly") || text.contains("read-only") {
         format!("database {database} is read-only ({text}): fieldbal needs to write the file and its directory (for the -wal and -shm files); fix the permissions or the mount, or point --database elsewhere")
     } else {
@@ -471,4 +479,41 @@ async fn run(args: ServeArgs) -> Result<(), String> {
     pool.close().await;
     tracing::info!("stopped");
     Ok(())
+}
+
+#[cfg(test)]
+mod start_tests {
+    use super::cannot_write;
+
+    fn fault() -> sqlx::Error {
+        sqlx::Error::Configuration("unable to open database file".into())
+    }
+
+    /// An SQLite file in a directory that does not exist: the start error
+    /// says which directory, not only SQLite's "unable to open database file";
+    /// a file path given as it is is named once.
+    #[test]
+    fn a_missing_directory_is_named_at_start() {
+        let dir = tempfile::tempdir().unwrap();
+        let missing = dir.path().join("no such dir");
+        let file = missing.join("f.db");
+        let e = cannot_write(file.to_str().unwrap(), &fault());
+        assert!(
+            e.contains(&format!(
+                "the directory {} does not exist",
+                missing.display()
+            )),
+            "{e}"
+        );
+        assert_eq!(e.matches(file.to_str().unwrap()).count(), 1, "{e}");
+        // Its directory exists: nothing said of it.
+        let e = cannot_write(dir.path().join("f.db").to_str().unwrap(), &fault());
+        assert!(!e.contains("does not exist"), "{e}");
+    }
+
+    #[test]
+    fn a_password_in_a_refused_url_is_not_shown() {
+        let e = cannot_write("mysql://u:secret@h/db", &fault());
+        assert!(!e.contains("secret"), "{e}");
+    }
 }

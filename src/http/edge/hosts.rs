@@ -32,6 +32,21 @@ impl AllowedHosts {
         hosts
     }
 
+    /// [`AllowedHosts::parse`], refusing an entry that no `Host` header can
+    /// equal, named with what is meant.
+    pub fn try_parse(list: &str) -> Result<AllowedHosts, String> {
+        for entry in list.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+            if entry != "*" && !host_entry(entry) {
+                return Err(format!(
+                    "--allowed-hosts: '{entry}' is not a host name as a Host header gives it: \
+                     a name or address with an optional port (`stand-pc`, `stand-pc:8080`, \
+                     `[fd00::5]:8080`), no scheme or path; `*` for any"
+                ));
+            }
+        }
+        Ok(AllowedHosts::parse(list))
+    }
+
     /// Whether `host` (`name`, `name:port`, `[v6]:port`) may be answered.
     pub fn allows(&self, host: &str) -> bool {
         if self.any {
@@ -71,6 +86,25 @@ impl AllowedHosts {
             .with_field("Host")),
         }
     }
+}
+
+/// Whether `entry` can equal a `Host` header: a name (letters, digits, `-`,
+/// `.`, `_`) or a bracketed IPv6 literal, then optionally `:port`.
+fn host_entry(entry: &str) -> bool {
+    let (name, port) = split_port(entry);
+    let port_ok = match entry.len() - name.len() {
+        0 => true,
+        _ => port.is_some(),
+    };
+    let name_ok = if name.starts_with('[') {
+        literal_address(name)
+    } else {
+        !name.is_empty()
+            && name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || "-._".contains(c))
+    };
+    name_ok && port_ok
 }
 
 /// `127.0.0.1`, `[::1]` (brackets required for IPv6, as in a Host header).
@@ -136,5 +170,38 @@ mod tests {
             assert_eq!(hosts.allows(host), allowed, "{host}");
         }
         assert!(AllowedHosts::parse("*").allows("anything:1"));
+    }
+
+    /// An entry no `Host` header can equal (a URL, a path, a space, a port
+    /// that is not one) is refused at start naming it: accepted, it made
+    /// every request from that name a 421 with nothing said at start.
+    #[test]
+    fn an_entry_that_can_match_no_host_is_refused_naming_it() {
+        for bad in [
+            "http://stand-pc:8080",
+            "stand-pc/",
+            "stand pc",
+            "stand-pc:80800",
+            "stand-pc:",
+            "[::1",
+            "stand-pc:port",
+        ] {
+            let err = AllowedHosts::try_parse(&format!("ok-name, {bad}")).expect_err(bad);
+            assert!(
+                err.contains(&format!("'{bad}'")) && err.contains("--allowed-hosts"),
+                "{err}"
+            );
+        }
+        for good in [
+            "",
+            "*",
+            "stand-pc",
+            "stand-pc:8080",
+            "Balancer.Plant:8443, [::1]:8080",
+            "10.0.0.5",
+            "host_1",
+        ] {
+            assert!(AllowedHosts::try_parse(good).is_ok(), "{good}");
+        }
     }
 }

@@ -63,7 +63,7 @@ impl EdgeConfig {
         let var = std::env::var("FIELDBAL_TOKENS").ok();
         Ok(EdgeConfig {
             tokens: access::Tokens::load(args.tokens_file.as_deref(), var.as_deref())?,
-            hosts: hosts::AllowedHosts::parse(&args.allowed_hosts),
+            hosts: hosts::AllowedHosts::try_parse(&args.allowed_hosts)?,
             connections: connections::Limits {
                 header_read_timeout: Duration::from_secs(args.header_read_timeout_secs.max(1)),
                 write_timeout: Duration::from_secs(args.write_timeout_secs.max(1)),

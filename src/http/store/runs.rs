@@ -86,7 +86,8 @@ pub(crate) fn encode_segment(s: &str) -> String {
     request_body = Run,
     responses(
         (status = 201, description = "Appended as version 1", body = RunStored,
-         headers(("Location" = String, description = "/api/v1/sessions/{id}/runs/{run_id}"))),
+         headers(("Location" = String, description = "/api/v1/sessions/{id}/runs/{run_id}"),
+                 ("ETag" = String, description = "The run's version; send it as If-Match with a PUT"))),
         MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 409, description = "The session already has a run with this id", body = ErrorBody),
@@ -131,7 +132,8 @@ pub async fn append(
            ("If-Match" = Option<String>, Header, description = "The run's ETag: refuse (412) if the run changed since (compared strongly: a weak tag `W/\"…\"` never matches; a value that is neither `*` nor a list of quoted entity-tags is refused with 400 `invalid_header`)")),
     request_body = Run,
     responses(
-        (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored),
+        (status = 200, description = "Stored as a new version; the earlier ones are kept", body = RunStored,
+         headers(("ETag" = String, description = "The run's new version; send it as If-Match with the next PUT"))),
         MalformedJson,
         (status = 404, description = "No such session or run", body = ErrorBody),
         BodyRefused,

@@ -155,3 +155,66 @@ async fn every_operation_has_a_summary_a_unique_id_and_its_real_refusals() {
     }
     assert!(faults.is_empty(), "{faults:#?}");
 }
+
+/// The headers the service's answers carry for a client to use (`ETag`,
+/// `Location`, `X-Total-Count`) are declared on the answer that carries
+/// them: a stored or corrected run's `ETag` (to send as `If-Match` with the
+/// next `PUT`) was sent but not declared.
+#[tokio::test]
+async fn the_headers_answers_carry_are_declared_in_the_document() {
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    let session = common::example("pump-two-plane-exact.json");
+    let session = session.get("session").cloned().unwrap_or(session);
+    let (status, _, created) =
+        common::post(&client, &server.url("/api/v1/sessions"), &session).await;
+    assert_eq!(status, 201, "{created}");
+    let id = created["id"].as_str().unwrap().to_string();
+    let mut run = session["runs"][1].clone();
+    run["id"] = serde_json::json!("check");
+    let runs = format!("/api/v1/sessions/{id}/runs");
+    let one = format!("/api/v1/sessions/{id}/runs/check");
+    let answers = [
+        (
+            "post",
+            "/api/v1/sessions/{id}/runs",
+            client.post(server.url(&runs)).json(&run),
+        ),
+        (
+            "put",
+            "/api/v1/sessions/{id}/runs/{run_id}",
+            client.put(server.url(&one)).json(&run),
+        ),
+        (
+            "get",
+            "/api/v1/sessions/{id}/runs/{run_id}",
+            client.get(server.url(&one)),
+        ),
+        (
+            "get",
+            "/api/v1/sessions/{id}",
+            client.get(server.url(&format!("/api/v1/sessions/{id}"))),
+        ),
+        (
+            "get",
+            "/api/v1/sessions/{id}/runs/{run_id}/versions",
+            client.get(server.url(&format!("{one}/versions"))),
+        ),
+    ];
+    let mut undeclared = Vec::new();
+    for (method, template, req) in answers {
+        let (status, headers, body) = send(req).await;
+        assert!(status < 300, "{method} {template}: {status} {body}");
+        let declared = &doc["paths"][template][method]["responses"][status.to_string()]["headers"];
+        for name in ["etag", "location", "x-total-count"] {
+            let said = declared
+                .as_object()
+                .is_some_and(|h| h.keys().any(|k| k.eq_ignore_ascii_case(name)));
+            if headers.contains_key(name) && !said {
+                undeclared.push(format!("{method} {template} {status}: {name}"));
+            }
+        }
+    }
+    assert!(undeclared.is_empty(), "{undeclared:#?}");
+    server.shutdown().await;
+}

@@ -197,11 +197,41 @@ impl NoParams {
 /// naming the parameter at fault when axum's message does.
 pub fn invalid_query(r: QueryRejection) -> ApiError {
     let text = r.body_text();
-    let error = ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", text.clone());
-    match query_field(&text) {
+    let field = query_field(&text);
+    let message = query_message(&text, field.as_deref());
+    let error = ApiError::new(StatusCode::BAD_REQUEST, "invalid_query", message);
+    match field {
         Some(field) => error.with_field(field),
         None => error,
     }
+}
+
+/// axum's query message ("Failed to deserialize query string: foo: unknown
+/// field `foo`, there are no fields") in the service's words, naming the
+/// parameter and what the operation takes.
+fn query_message(text: &str, field: Option<&str>) -> String {
+    let Some(rest) = text.strip_prefix("Failed to deserialize query string: ") else {
+        return text.to_string();
+    };
+    let Some(name) = field else {
+        return format!("the query string does not parse: {rest}");
+    };
+    if rest.starts_with("duplicate field") {
+        return format!("query parameter `{name}` is given more than once");
+    }
+    let cause = rest.split_once(": ").map_or(rest, |(_, cause)| cause);
+    if cause.starts_with("unknown field") {
+        return match cause.split_once(", expected ") {
+            Some((_, taken)) => format!(
+                "`{name}` is not a query parameter of this operation, which takes {}",
+                taken.trim_start_matches("one of ")
+            ),
+            None => format!(
+                "`{name}` is not a query parameter of this operation, which takes no query parameter"
+            ),
+        };
+    }
+    format!("query parameter `{name}`: {cause}")
 }
 
 /// The parameter axum's query message names: its `serde_path_to_error`

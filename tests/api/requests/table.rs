@@ -339,3 +339,53 @@ async fn a_first_run_with_weights_is_refused_naming_its_weights() {
     assert_eq!(back["runs"], json!([]), "{back}");
     server.shutdown().await;
 }
+
+/// A query the operation does not take is refused in the service's words,
+/// naming the parameter and what is taken; it read "Failed to deserialize
+/// query string: x: unknown field `x`, there are no fields" (axum's).
+#[tokio::test]
+async fn a_refused_query_says_what_the_operation_takes_in_plain_words() {
+    let (_dir, server, client) = common::fresh_server().await;
+    let cases = [
+        (
+            client.get(server.url("/api/v1/sessions?foo=1")),
+            "foo",
+            &["`foo`", "`limit`", "`before`"][..],
+        ),
+        (
+            client.get(server.url("/api/v1/sessions?limit=abc")),
+            "limit",
+            &["`limit`", "invalid digit"][..],
+        ),
+        (
+            client.get(server.url("/api/v1/sessions?limit=1&limit=2")),
+            "limit",
+            &["`limit`", "more than once"][..],
+        ),
+        (
+            client.get(server.url("/api/v1/openapi.json?x=1")),
+            "x",
+            &["`x`", "takes no query parameter"][..],
+        ),
+        (
+            client
+                .post(server.url("/api/v1/solve?discrete=true"))
+                .json(&serde_json::json!({})),
+            "discrete",
+            &["`discrete`", "takes no query parameter"][..],
+        ),
+    ];
+    for (req, field, said) in cases {
+        let (status, _, body) = common::send(req).await;
+        assert_eq!(status, 400, "{body}");
+        assert_eq!(body["error"]["code"], "invalid_query", "{body}");
+        assert_eq!(body["error"]["field"], field, "{body}");
+        let message = body["error"]["message"].as_str().unwrap();
+        assert!(!message.contains("Failed to deserialize"), "{message}");
+        assert!(!message.contains("there are no fields"), "{message}");
+        for s in said {
+            assert!(message.contains(s), "{s}: {message}");
+        }
+    }
+    server.shutdown().await;
+}

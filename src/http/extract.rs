@@ -62,6 +62,10 @@ async fn parse<T: DeserializeOwned + Send + 'static>(bytes: Bytes) -> Result<T, 
 /// Buffer the body; the router's `DefaultBodyLimit` bounds its size.
 async fn read<S: Send + Sync>(req: Request, state: &S) -> Result<(HeaderMap, Bytes), ApiError> {
     let headers = req.headers().clone();
+    let limit = req
+        .extensions()
+        .get::<super::edge::BodyLimit>()
+        .map(|l| l.0);
     let bytes = Bytes::from_request(req, state)
         .await
         .map_err(|rejection: BytesRejection| {
@@ -69,7 +73,12 @@ async fn read<S: Send + Sync>(req: Request, state: &S) -> Result<(HeaderMap, Byt
                 ApiError::new(
                     StatusCode::PAYLOAD_TOO_LARGE,
                     "body_too_large",
-                    "the request body is larger than the server's limit",
+                    match limit {
+                        Some(n) => format!(
+                            "the request body is larger than the server's limit of {n} bytes"
+                        ),
+                        None => "the request body is larger than the server's limit".to_string(),
+                    },
                 )
             } else {
                 ApiError::new(

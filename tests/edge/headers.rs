@@ -134,6 +134,32 @@ async fn an_announced_body_over_the_limit_gets_413_before_it_is_sent() {
     assert_eq!(answer.json()["error"]["code"], "body_too_large");
 }
 
+/// A body sent without `Content-Length` (chunked) that runs over the limit
+/// is refused as one announced over it is: 413 naming the limit, which the
+/// chunked refusal did not ("larger than the server's limit").
+#[tokio::test]
+async fn a_chunked_body_over_the_limit_gets_413_naming_the_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let limit = 1000;
+    let (addr, server) = common::start_server_with(&dir.path().join("t.db"), limit).await;
+    let chunk = " ".repeat(limit + 1);
+    let request = format!(
+        "POST /api/v1/solve HTTP/1.1\r\nHost: {addr}\r\nContent-Type: application/json\r\n\
+         Transfer-Encoding: chunked\r\nConnection: close\r\n\r\n{:x}\r\n{chunk}\r\n0\r\n\r\n",
+        chunk.len()
+    );
+    let answer = exchange(addr, request.as_bytes()).await.expect("an answer");
+    assert_eq!(answer.status, 413);
+    let body = answer.json();
+    assert_eq!(body["error"]["code"], "body_too_large", "{body}");
+    let message = body["error"]["message"].as_str().unwrap();
+    assert!(
+        message.contains(&format!("limit of {limit} bytes")),
+        "{message}"
+    );
+    server.shutdown().await;
+}
+
 #[tokio::test]
 async fn protocol_level_errors_carry_the_contract_error_body() {
     let dir = tempfile::tempdir().unwrap();

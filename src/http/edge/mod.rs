@@ -81,11 +81,19 @@ pub(crate) struct Guard {
     pub body_limit: usize,
 }
 
+/// The body limit in force, for the extractors' 413 (a request extension).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BodyLimit(pub usize);
+
 /// The middleware in front of every route.
-pub(crate) async fn guard(State(guard): State<Guard>, req: Request, next: Next) -> Response {
+pub(crate) async fn guard(State(guard): State<Guard>, mut req: Request, next: Next) -> Response {
     let form = is_form_file(req.uri().path());
     let mut resp = match refusal(&guard, &req) {
-        None => next.run(req).await,
+        None => {
+            // A body read past the limit (sent chunked) is refused naming it.
+            req.extensions_mut().insert(BodyLimit(guard.body_limit));
+            next.run(req).await
+        }
         Some(refused) => refused,
     };
     if resp.status().is_client_error() || resp.status().is_server_error() {

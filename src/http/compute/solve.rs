@@ -93,7 +93,7 @@ pub async fn solve(
     operation_id = "create_solution", summary = "Solve a stored session and store the solution",
     params(("id" = String, Path, description = "Session id"),
            ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and options answers the first answer again and stores nothing new")),
-    request_body(content = SolveOptions, description = "Solve options; an empty body means the defaults"),
+    request_body(content = Option<SolveOptions>, description = "Solve options; an empty body means the defaults"),
     responses(
         (status = 201, description = "Solved and stored", body = StoredSolution),
         MalformedJson,

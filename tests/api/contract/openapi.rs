@@ -218,3 +218,25 @@ async fn the_headers_answers_carry_are_declared_in_the_document() {
     assert!(undeclared.is_empty(), "{undeclared:#?}");
     server.shutdown().await;
 }
+
+/// `POST …/solutions` takes an empty body (the default options), and the
+/// document says so: it declared the body required, so a generated client
+/// could not send none.
+#[tokio::test]
+async fn the_solutions_body_is_declared_optional_as_it_is() {
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    let body = &doc["paths"]["/api/v1/sessions/{id}/solutions"]["post"]["requestBody"];
+    assert_ne!(body["required"], true, "{body}");
+    let session = common::example("pump-two-plane-exact.json");
+    let session = session.get("session").cloned().unwrap_or(session);
+    let (_, _, created) = common::post(&client, &server.url("/api/v1/sessions"), &session).await;
+    let url = server.url(&format!(
+        "/api/v1/sessions/{}/solutions",
+        created["id"].as_str().unwrap()
+    ));
+    let (status, _, solved) =
+        send(client.post(url).header("content-type", "application/json")).await;
+    assert_eq!(status, 201, "{solved}");
+    server.shutdown().await;
+}

@@ -388,13 +388,23 @@ async fn shutdown_signal() {
 pub fn serve_main(args: ServeArgs) -> ExitCode {
     // Logs go to standard error (journald and container runtimes collect it),
     // coloured only on a terminal.
+    let (filter, unparsed) = match tracing_subscriber::EnvFilter::try_from_default_env() {
+        Ok(filter) => (filter, None),
+        // Unset: the default. Set but not a filter: the default, said once
+        // the logger is up (`fieldbal=verbose` fell back silently).
+        Err(e) => (
+            "info".into(),
+            std::env::var("RUST_LOG").ok().map(|v| (v, e.to_string())),
+        ),
+    };
     tracing_subscriber::fmt()
         .with_writer(std::io::stderr)
         .with_ansi(std::io::IsTerminal::is_terminal(&std::io::stderr()))
-        .with_env_filter(
-            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "info".into()),
-        )
+        .with_env_filter(filter)
         .init();
+    if let Some((value, e)) = unparsed {
+        tracing::warn!("RUST_LOG={value:?} is not a log filter ({e}); logging at info (e.g. RUST_LOG=debug or RUST_LOG=info,fieldbal=debug)");
+    }
     let runtime = match tokio::runtime::Runtime::new() {
         Ok(rt) => rt,
         Err(e) => {

@@ -43,3 +43,39 @@ async fn serve_keeps_its_data_in_the_working_directory_and_stops_cleanly_on_sigt
     assert_eq!(back["name"], session["name"]);
     assert!(terminate(child).success());
 }
+
+/// A `RUST_LOG` that is not a filter (a level misspelt after a module) is
+/// said at start; it was dropped silently for `info`, so an operator asking
+/// for debug logs got none and no reason.
+#[test]
+fn a_rust_log_that_does_not_parse_is_said_at_start() {
+    use std::io::BufRead;
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "127.0.0.1:0", "--database"])
+        .arg(dir.path().join("t.db"))
+        .env_remove("FIELDBAL_TOKENS")
+        .env("RUST_LOG", "fieldbal=verbose")
+        .env("NO_COLOR", "1")
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut said = Vec::new();
+    for line in std::io::BufReader::new(child.stderr.take().unwrap()).lines() {
+        let line = line.unwrap();
+        let done = line.contains("listening");
+        said.push(line);
+        if done {
+            break;
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    assert!(
+        said.iter().any(|l| l.contains("RUST_LOG")
+            && l.contains("fieldbal=verbose")
+            && l.contains("info")),
+        "{said:#?}"
+    );
+}

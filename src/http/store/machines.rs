@@ -48,14 +48,20 @@ fn no_machine(id: &str) -> ApiError {
 /// The checks of a posted machine (its rotor as in a session).
 fn validate(m: &NewMachine) -> Result<(), InputError> {
     super::text::check_machine(m)?;
-    if m.name
-        .as_ref()
-        .is_some_and(|x| x.trim().is_empty() || x.chars().count() > 200)
-    {
-        return Err(invalid(
-            "name",
-            "a name of 1 to 200 characters, or no name at all",
-        ));
+    if let Some(name) = &m.name {
+        let n = name.chars().count();
+        if name.trim().is_empty() {
+            return Err(invalid(
+                "name",
+                "a name is not blank: give 1 to 200 characters, or leave `name` out",
+            ));
+        }
+        if n > 200 {
+            return Err(invalid(
+                "name",
+                format!("a name is 1 to 200 characters; this one has {n}"),
+            ));
+        }
     }
     if m.notes.as_ref().is_some_and(|x| x.chars().count() > 10_000) {
         return Err(invalid("notes", "at most 10000 characters"));

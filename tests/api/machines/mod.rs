@@ -591,3 +591,24 @@ async fn a_session_naming_no_machine_is_refused_saying_it_names_none() {
         "{message}"
     );
 }
+
+/// A machine's name that is refused says why: blank, or how long it is
+/// (both read "a name of 1 to 200 characters, or no name at all", which a
+/// name of two spaces has).
+#[tokio::test]
+async fn a_refused_machine_name_says_why() {
+    let (_dir, server, client) = fresh_server().await;
+    let url = server.url("/api/v1/machines");
+    for (name, said) in [("  ", "blank"), (&*"n".repeat(201), "201")] {
+        let (status, _, err) = post(&client, &url, &json!({"id": "M", "name": name})).await;
+        assert_eq!(
+            (status, error_of(&err)),
+            (422, ("invalid_value", Some("name")))
+        );
+        let message = err["error"]["message"].as_str().unwrap();
+        assert!(
+            message.contains(said) && message.contains("200"),
+            "{message}"
+        );
+    }
+}

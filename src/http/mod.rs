@@ -453,6 +453,15 @@ async fn run(args: ServeArgs) -> Result<(), String> {
             "bearer tokens required on /api/"
         );
     }
+    // The address first: a start that cannot listen creates no database.
+    let listener = tokio::net::TcpListener::bind(&args.listen)
+        .await
+        .map_err(|e| {
+            format!(
+                "cannot listen on {} ({e}): --listen (FIELDBAL_LISTEN) takes HOST:PORT, e.g. 127.0.0.1:8080, or 0.0.0.0:8080 for every interface",
+                args.listen
+            )
+        })?;
     let pool = connect_db(&args.database)
         .await
         .map_err(|e| cannot_write(&args.database, &e))?;
@@ -461,9 +470,6 @@ async fn run(args: ServeArgs) -> Result<(), String> {
     crate::db::health::probe(&crate::db::Db::new(pool.clone()))
         .await
         .map_err(|e| cannot_write(&args.database, &e))?;
-    let listener = tokio::net::TcpListener::bind(&args.listen)
-        .await
-        .map_err(|e| format!("cannot listen on {}: {e}", args.listen))?;
     let addr = listener.local_addr().map_err(|e| e.to_string())?;
     match crate::db::engine::sqlite_file(&args.database) {
         Some(file) => {

@@ -79,3 +79,25 @@ fn a_rust_log_that_does_not_parse_is_said_at_start() {
         "{said:#?}"
     );
 }
+
+/// A `--listen` that is no address says what one looks like, and the start
+/// stops before the database is opened (it created the database file first).
+#[test]
+fn a_listen_address_that_is_none_says_what_is_meant() {
+    let dir = tempfile::tempdir().unwrap();
+    let db = dir.path().join("t.db");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+        .args(["serve", "--listen", "stand-pc", "--database"])
+        .arg(&db)
+        .env_remove("FIELDBAL_TOKENS")
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        said.contains("--listen") && said.contains("stand-pc") && said.contains("127.0.0.1:8080"),
+        "{said}"
+    );
+    assert!(!db.exists(), "the database was created: {said}");
+}

@@ -95,7 +95,8 @@ pub async fn solve(
            ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and options answers the first answer again and stores nothing new")),
     request_body(content = Option<SolveOptions>, description = "Solve options; an empty body means the defaults"),
     responses(
-        (status = 201, description = "Solved and stored", body = StoredSolution),
+        (status = 201, description = "Solved and stored", body = StoredSolution,
+         headers(("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored"))),
         MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
         BodyRefused,

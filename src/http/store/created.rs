@@ -44,7 +44,8 @@ impl<B: Serialize> CreatedAnswer<B> {
         parts: impl IntoResponseParts,
     ) -> Result<Response, ApiError> {
         match written {
-            Err(StoreError::Replayed(r)) => return Ok(headers::replay(r)),
+            // The kept 201, with the headers this answer adds (a run's ETag).
+            Err(StoreError::Replayed(r)) => return Ok((parts, headers::replay(r)).into_response()),
             other => other?,
         };
         Ok((

@@ -77,7 +77,8 @@ fn validate(m: &NewMachine) -> Result<(), InputError> {
     request_body = NewMachine,
     responses(
         (status = 201, description = "Stored", body = machines::Machine,
-         headers(("Location" = String, description = "/api/v1/machines/{id}"))),
+         headers(("Location" = String, description = "/api/v1/machines/{id}"),
+                 ("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored"))),
         MalformedJson,
         (status = 409, description = "A machine with this id exists", body = ErrorBody),
         (status = 422, description = "Invalid machine, or an Idempotency-Key used for another request", body = ErrorBody),
@@ -199,7 +200,7 @@ pub struct PoolRequest {
     params(("id" = String, Path, description = "Machine id")),
     request_body = PoolRequest,
     responses(
-        (status = 201, description = "A new coefficient version pooled from the sessions, with `warnings`: `coefficients_disagree` (sessions whose coefficients disagree with the others beyond their noise), `plane_undetermined` (a plane whose pooled trials moved no reading, with `plane`), `no_trial_runs` (a listed session with its reference run alone, which adds nothing)", body = StoredCoefficients),
+        (status = 201, headers(("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored")), description = "A new coefficient version pooled from the sessions, with `warnings`: `coefficients_disagree` (sessions whose coefficients disagree with the others beyond their noise), `plane_undetermined` (a plane whose pooled trials moved no reading, with `plane`), `no_trial_runs` (a listed session with its reference run alone, which adds nothing)", body = StoredCoefficients),
         MalformedJson,
         (status = 404, description = "No such machine", body = ErrorBody),
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),

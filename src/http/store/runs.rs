@@ -87,7 +87,8 @@ pub(crate) fn encode_segment(s: &str) -> String {
     responses(
         (status = 201, description = "Appended as version 1", body = RunStored,
          headers(("Location" = String, description = "/api/v1/sessions/{id}/runs/{run_id}"),
-                 ("ETag" = String, description = "The run's version; send it as If-Match with a PUT"))),
+                 ("ETag" = String, description = "The run's version; send it as If-Match with a PUT"),
+                 ("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored"))),
         MalformedJson,
         (status = 404, description = "No such session", body = ErrorBody),
         (status = 409, description = "The session already has a run with this id", body = ErrorBody),
@@ -105,7 +106,8 @@ pub async fn append(
     let path = format!("/api/v1/sessions/{id}/runs");
     let idem = headers::idempotency(&request_headers, "POST", &path, &run)?;
     if let Some(r) = idempotency::lookup(&state.db, idem.as_ref()).await? {
-        return Ok(headers::replay(r));
+        // An append's kept answer is its 201 of version 1, ETag included.
+        return Ok(([(header::ETAG, headers::run_etag(1))], headers::replay(r)).into_response());
     }
     super::text::check_new_run(&run)?;
     let location = format!(

@@ -99,7 +99,8 @@ pub fn validate_stored(session: &Session) -> Result<(), InputError> {
     params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores nothing new")),
     responses(
         (status = 201, description = "Stored", body = Created,
-         headers(("Location" = String, description = "/api/v1/sessions/{id}"))),
+         headers(("Location" = String, description = "/api/v1/sessions/{id}"),
+                 ("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored"))),
         MalformedJson,
         BodyRefused,
         (status = 422, description = "Invalid session, over the size limits (`too_large`), or an Idempotency-Key used for another request", body = ErrorBody),

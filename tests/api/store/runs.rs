@@ -183,3 +183,51 @@ async fn if_match_compares_strongly_so_a_weak_tag_never_matches() {
     let (status, _, body) = send(client.put(&run_url).header("If-Match", &tag).json(&run)).await;
     assert_eq!(status, 200, "{body}");
 }
+
+/// A retried append (the same `Idempotency-Key`, the first answer lost)
+/// answers as the first did, `ETag` included: the replay carried no `ETag`,
+/// so a client that lost the first answer had none to send as `If-Match`.
+/// The document declares both headers of that answer.
+#[tokio::test]
+async fn a_replayed_append_carries_the_runs_etag_as_the_first_answer_did() {
+    let (_dir, server, client) = fresh_server().await;
+    let ex = example("pump-two-plane-exact.json");
+    let session = ex.get("session").cloned().unwrap_or(ex);
+    let (_, _, created) = post(&client, &server.url("/api/v1/sessions"), &session).await;
+    let url = server.url(&format!(
+        "/api/v1/sessions/{}/runs",
+        created["id"].as_str().unwrap()
+    ));
+    let mut run = session["runs"][1].clone();
+    run["id"] = json!("check");
+    let append = || {
+        client
+            .post(&url)
+            .header("Idempotency-Key", "append-check-1")
+            .json(&run)
+    };
+    let (first, first_headers, _) = send(append()).await;
+    let (again, again_headers, body) = send(append()).await;
+    assert_eq!((first, again), (201, 201), "{body}");
+    assert_eq!(again_headers.get("idempotent-replayed").unwrap(), "true");
+    assert_eq!(
+        again_headers.get("etag"),
+        first_headers.get("etag"),
+        "the replay's ETag"
+    );
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    for (path, method) in [
+        ("/api/v1/sessions/{id}/runs", "post"),
+        ("/api/v1/sessions", "post"),
+        ("/api/v1/sessions/{id}/solutions", "post"),
+        ("/api/v1/machines", "post"),
+        ("/api/v1/machines/{id}/coefficients", "post"),
+    ] {
+        let headers = &doc["paths"][path][method]["responses"]["201"]["headers"];
+        assert!(
+            headers.get("Idempotent-Replayed").is_some(),
+            "{method} {path}: {headers}"
+        );
+    }
+    server.shutdown().await;
+}

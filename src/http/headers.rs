@@ -159,6 +159,7 @@ fn entity_tags(text: &str) -> Option<Vec<String>> {
 /// Paging of a list: `limit` 1 to `max` (default `default`), `offset` 0 or more.
 #[derive(Debug, Deserialize, IntoParams)]
 #[serde(deny_unknown_fields)]
+#[into_params(parameter_in = Query)]
 pub struct Page {
     /// Items per page.
     pub limit: Option<i64>,

@@ -197,7 +197,8 @@ pub struct PoolRequest {
 
 #[utoipa::path(post, path = "/api/v1/machines/{id}/coefficients", tag = "machines",
     operation_id = "pool_coefficients", summary = "Pool sessions into the machine's next coefficient version",
-    params(("id" = String, Path, description = "Machine id")),
+    params(("id" = String, Path, description = "Machine id"),
+           ("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores no new version")),
     request_body = PoolRequest,
     responses(
         (status = 201, headers(("Idempotent-Replayed" = String, description = "`true` on the answer kept for a repeated Idempotency-Key: nothing new was stored")), description = "A new coefficient version pooled from the sessions, with `warnings`: `coefficients_disagree` (sessions whose coefficients disagree with the others beyond their noise), `plane_undetermined` (a plane whose pooled trials moved no reading, with `plane`), `no_trial_runs` (a listed session with its reference run alone, which adds nothing)", body = StoredCoefficients),
@@ -206,8 +207,7 @@ pub struct PoolRequest {
         (status = 422, description = "A session unknown, of another machine, or the runs cannot be pooled", body = ErrorBody),
         SolverOrStoreUnavailable,
         StorageFull,
-    ),
-    params(("Idempotency-Key" = Option<String>, Header, description = "A retry with the same key and body answers the first answer again and stores no new version")))]
+    ))]
 pub async fn pool_coefficients(
     State(state): State<AppState>,
     Path(id): Path<String>,
@@ -278,6 +278,7 @@ pub async fn pool_coefficients(
 /// `?version=n`.
 #[derive(Debug, Deserialize, IntoParams)]
 #[serde(deny_unknown_fields)]
+#[into_params(parameter_in = Query)]
 pub struct VersionParams {
     /// A version number; the latest when absent.
     pub version: Option<i64>,

@@ -240,3 +240,42 @@ async fn the_solutions_body_is_declared_optional_as_it_is() {
     assert_eq!(status, 201, "{solved}");
     server.shutdown().await;
 }
+
+/// Every path parameter is a `{name}` of its path and every `{name}` is a
+/// path parameter; `limit`, `offset` and `version` are query parameters.
+/// They were declared `in: path` (utoipa's default without
+/// `parameter_in = Query`), which an OpenAPI validator refuses and a
+/// generated client puts in the path.
+#[tokio::test]
+async fn path_parameters_are_the_paths_own_and_the_rest_are_queries() {
+    let (_dir, server, client) = fresh_server().await;
+    let (_, _, doc) = send(client.get(server.url("/api/v1/openapi.json"))).await;
+    let mut faults = Vec::new();
+    for (path, item) in doc["paths"].as_object().unwrap() {
+        let mut templated: Vec<&str> = path
+            .split('/')
+            .filter_map(|s| s.strip_prefix('{')?.strip_suffix('}'))
+            .collect();
+        templated.sort();
+        for (method, op) in item.as_object().unwrap() {
+            let params = op["parameters"].as_array().cloned().unwrap_or_default();
+            let mut in_path: Vec<&str> = params
+                .iter()
+                .filter(|p| p["in"] == "path")
+                .map(|p| p["name"].as_str().unwrap())
+                .collect();
+            in_path.sort();
+            if in_path != templated {
+                faults.push(format!("{method} {path}: path parameters {in_path:?}"));
+            }
+            for p in &params {
+                let name = p["name"].as_str().unwrap();
+                if ["limit", "offset", "before", "version"].contains(&name) && p["in"] != "query" {
+                    faults.push(format!("{method} {path}: {name} in {}", p["in"]));
+                }
+            }
+        }
+    }
+    assert!(faults.is_empty(), "{faults:#?}");
+    server.shutdown().await;
+}

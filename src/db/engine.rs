@@ -117,73 +117,6 @@ fn percent_decoded(text: &str) -> Option<String> {
     String::from_utf8(out).ok()
 }
 
-#[cfg(test)]
-mod file_tests {
-    use super::sqlite_file;
-    use std::path::Path;
-
-    /// The start log names the file SQLite opens: sqlx percent-decodes the
-    /// URL's path, so `%20` is a space in the file's name.
-    #[test]
-    fn an_sqlite_url_names_the_decoded_file() {
-        assert_eq!(
-            sqlite_file("sqlite:///tmp/a%20b/f%23.db?mode=rwc").as_deref(),
-            Some(Path::new("/tmp/a b/f#.db"))
-        );
-        assert_eq!(
-            sqlite_file("sqlite:/tmp/a b/f.db").as_deref(),
-            Some(Path::new("/tmp/a b/f.db"))
-        );
-        // A plain path is the file's name as it is, `%` included.
-        assert_eq!(
-            sqlite_file("/tmp/a%20b.db").as_deref(),
-            Some(Path::new("/tmp/a%20b.db"))
-        );
-        // No file at all.
-        assert_eq!(sqlite_file("sqlite://a.db?mode=memory"), None);
-        assert_eq!(sqlite_file("sqlite::memory:"), None);
-        assert_eq!(sqlite_file("postgres://u@h/db"), None);
-    }
-
-    /// A URL of an engine fieldbal does not speak is refused naming its
-    /// scheme; it was taken for an SQLite path (`mysql://x/y` tried to open
-    /// the file `./mysql:/x/y`, "unable to open database file").
-    #[tokio::test]
-    async fn an_unsupported_database_url_is_refused_naming_its_scheme() {
-        for url in [
-            "mysql://u:secret@h/db",
-            "MariaDB://h/db",
-            "file:///tmp/x.db",
-        ] {
-            let scheme = &url[..url.find("://").unwrap()];
-            assert_eq!(sqlite_file(url), None, "{url}");
-            let e = super::connect(url).await.expect_err(url).to_string();
-            assert!(
-                e.contains(&format!("'{scheme}://'"))
-                    && e.contains("sqlite://")
-                    && e.contains("postgres://"),
-                "{url}: {e}"
-            );
-            assert!(!e.contains("secret"), "{url}: {e}");
-        }
-        // A path with `://` inside is still a path.
-        assert!(sqlite_file("/tmp/a://b.db").is_some());
-    }
-
-    /// A password in any URL is left out of logs and messages.
-    #[test]
-    fn a_password_is_redacted_whatever_the_scheme() {
-        for url in ["postgres://u:secret@h/db", "mysql://u:secret@h/db"] {
-            let shown = super::redacted(url);
-            assert!(
-                !shown.contains("secret") && shown.contains("u:***@h"),
-                "{shown}"
-            );
-        }
-        assert_eq!(super::redacted("sqlite://a.db"), "sqlite://a.db");
-    }
-}
-
 /// How long an SQLite connection waits for another process's writer.
 const BUSY_TIMEOUT_MS: u64 = 10_000;
 /// Connections per process. SQLite has one writer anyway; a PostgreSQL
@@ -358,4 +291,71 @@ pub(crate) async fn lock_key(conn: &mut AnyConnection, key: &str) -> sqlx::Resul
         .await?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod file_tests {
+    use super::sqlite_file;
+    use std::path::Path;
+
+    /// The start log names the file SQLite opens: sqlx percent-decodes the
+    /// URL's path, so `%20` is a space in the file's name.
+    #[test]
+    fn an_sqlite_url_names_the_decoded_file() {
+        assert_eq!(
+            sqlite_file("sqlite:///tmp/a%20b/f%23.db?mode=rwc").as_deref(),
+            Some(Path::new("/tmp/a b/f#.db"))
+        );
+        assert_eq!(
+            sqlite_file("sqlite:/tmp/a b/f.db").as_deref(),
+            Some(Path::new("/tmp/a b/f.db"))
+        );
+        // A plain path is the file's name as it is, `%` included.
+        assert_eq!(
+            sqlite_file("/tmp/a%20b.db").as_deref(),
+            Some(Path::new("/tmp/a%20b.db"))
+        );
+        // No file at all.
+        assert_eq!(sqlite_file("sqlite://a.db?mode=memory"), None);
+        assert_eq!(sqlite_file("sqlite::memory:"), None);
+        assert_eq!(sqlite_file("postgres://u@h/db"), None);
+    }
+
+    /// A URL of an engine fieldbal does not speak is refused naming its
+    /// scheme; it was taken for an SQLite path (`mysql://x/y` tried to open
+    /// the file `./mysql:/x/y`, "unable to open database file").
+    #[tokio::test]
+    async fn an_unsupported_database_url_is_refused_naming_its_scheme() {
+        for url in [
+            "mysql://u:secret@h/db",
+            "MariaDB://h/db",
+            "file:///tmp/x.db",
+        ] {
+            let scheme = &url[..url.find("://").unwrap()];
+            assert_eq!(sqlite_file(url), None, "{url}");
+            let e = super::connect(url).await.expect_err(url).to_string();
+            assert!(
+                e.contains(&format!("'{scheme}://'"))
+                    && e.contains("sqlite://")
+                    && e.contains("postgres://"),
+                "{url}: {e}"
+            );
+            assert!(!e.contains("secret"), "{url}: {e}");
+        }
+        // A path with `://` inside is still a path.
+        assert!(sqlite_file("/tmp/a://b.db").is_some());
+    }
+
+    /// A password in any URL is left out of logs and messages.
+    #[test]
+    fn a_password_is_redacted_whatever_the_scheme() {
+        for url in ["postgres://u:secret@h/db", "mysql://u:secret@h/db"] {
+            let shown = super::redacted(url);
+            assert!(
+                !shown.contains("secret") && shown.contains("u:***@h"),
+                "{shown}"
+            );
+        }
+        assert_eq!(super::redacted("sqlite://a.db"), "sqlite://a.db");
+    }
 }

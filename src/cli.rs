@@ -333,6 +333,15 @@ mod tests {
 
     /// An operator who wants more (or less) logging reads `serve --help`:
     /// the log filter is the one setting without a flag.
+    /// Where the default database lands and what an address looks like are
+    /// in `serve --help`, not only in the README.
+    #[test]
+    fn serve_help_says_where_the_database_is_and_what_listen_takes() {
+        let help = long_help(&["serve"]);
+        assert!(help.contains("working directory"), "{help}");
+        assert!(help.contains("0.0.0.0:8080"), "{help}");
+    }
+
     #[test]
     fn serve_help_says_how_to_set_the_log_level() {
         let help = long_help(&["serve"]);

@@ -47,11 +47,12 @@ pub const DEFAULT_REQUEST_TIMEOUT_SECS: u64 = 30;
 /// `fieldbal serve` arguments.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ServeArgs {
-    /// Address to listen on.
+    /// Address to listen on, HOST:PORT (0.0.0.0:8080 for every interface).
     #[arg(long, env = "FIELDBAL_LISTEN", default_value = "127.0.0.1:8080")]
     pub listen: String,
     /// Database: `postgres://user:password@host/db` (PostgreSQL, for several
-    /// replicas), or an SQLite URL (`sqlite://fieldbal.db`) or file path.
+    /// replicas), or an SQLite URL (`sqlite://fieldbal.db`, `sqlite:///var/lib/fieldbal/fieldbal.db`)
+    /// or file path; a relative one is in the working directory (the start log names the file).
     #[arg(long, env = "DATABASE_URL", default_value = "sqlite://fieldbal.db")]
     pub database: String,
     /// Largest accepted request body, bytes.

@@ -178,7 +178,8 @@ impl Modify for EdgeAnswers {
                         // The handler's own 503s, and the edge's beside them.
                         std::collections::btree_map::Entry::Occupied(mut o) if *status == "503" => {
                             if let RefOr::T(own) = o.get_mut() {
-                                own.description = format!("{}; or: {description}", own.description);
+                                let edge = description.replacen("Too", "too", 1);
+                                own.description = format!("{}; or {edge}", own.description);
                             }
                         }
                         std::collections::btree_map::Entry::Occupied(_) => {}

@@ -268,6 +268,23 @@ fn read(path: &std::path::Path, max: usize) -> Result<Vec<u8>, InputError> {
     Ok(buf)
 }
 
+/// Standard input can be read once: `-` as a file and as `--options` is
+/// refused before anything is read (the options read an empty input).
+fn stdin_once<'a>(
+    mut files: impl Iterator<Item = &'a std::path::Path>,
+    options: Option<&std::path::Path>,
+) -> Result<(), InputError> {
+    let dash = |p: &std::path::Path| p.as_os_str() == "-";
+    if options.is_some_and(dash) && files.any(dash) {
+        return Err(InputError::invalid(
+            "invalid_value",
+            "options",
+            "standard input (`-`) is read once, and it is given for the file too: give the options (or the file) as a file",
+        ));
+    }
+    Ok(())
+}
+
 /// `fieldbal coefficients`: the sessions' pooled coefficients (v2 "Machines"),
 /// each session named by its file path.
 fn pool_files(
@@ -275,6 +292,7 @@ fn pool_files(
     options: Option<&std::path::Path>,
     max: usize,
 ) -> Result<serde_json::Value, InputError> {
+    stdin_once(files.iter().map(PathBuf::as_path), options)?;
     // Each session is validated once, here, and pooled as validated. The
     // files are all read first (the checked sessions borrow them), but an
     // error is reported for the first file that fails, reading or validation,

@@ -42,6 +42,7 @@ fn solve_file_inner(
     options: Option<&std::path::Path>,
     max: usize,
 ) -> Result<Answer, InputError> {
+    super::stdin_once(std::iter::once(file), options)?;
     let bytes = read(file, max)?;
     // One typed parse for a well-formed session file; otherwise the document
     // is read as a `Value` first, as it always was, so that a file of cases

@@ -60,3 +60,32 @@ fn coefficients_pools_session_files_and_solve_takes_the_new_options() {
     assert_eq!(code, 2);
     assert_eq!(err["error"]["field"], "options.exclude");
 }
+
+/// Standard input is read once: a command given `-` for its file and for
+/// `--options` is refused saying so, naming `options`, before anything is
+/// read (the options then read an empty input and were refused as "EOF while
+/// parsing", which said nothing of the cause).
+#[test]
+fn standard_input_given_twice_is_refused_saying_it_is_read_once() {
+    use std::io::Write;
+    let session = serde_json::to_vec(&json!({"session": trials(7)})).unwrap();
+    for args in [
+        &["solve", "-", "--options", "-"][..],
+        &["coefficients", "-", "--options", "-"],
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_fieldbal"))
+            .args(args)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The command may refuse before it reads: a closed pipe is no fault here.
+        let _ = child.stdin.take().unwrap().write_all(&session);
+        let out = child.wait_with_output().unwrap();
+        let v: Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {v}");
+        assert_eq!(v["error"]["field"], "options", "{args:?}: {v}");
+        let message = v["error"]["message"].as_str().unwrap();
+        assert!(message.contains("standard input"), "{args:?}: {message}");
+    }
+}

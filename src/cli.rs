@@ -268,6 +268,34 @@ fn read(path: &std::path::Path, max: usize) -> Result<Vec<u8>, InputError> {
     Ok(buf)
 }
 
+/// One file named twice in other words (`a.json` and `./a.json`, a link to
+/// it) would pool its runs twice: refused as a name given twice is. A path
+/// that cannot be resolved is left to the read, which names the fault.
+fn same_file_twice(files: &[PathBuf]) -> Result<(), InputError> {
+    let mut seen: Vec<(PathBuf, usize)> = Vec::with_capacity(files.len());
+    for (i, f) in files.iter().enumerate() {
+        if f.as_os_str() == "-" {
+            continue;
+        }
+        let Ok(real) = std::fs::canonicalize(f) else {
+            continue;
+        };
+        if let Some((_, first)) = seen.iter().find(|(p, _)| *p == real) {
+            return Err(InputError::invalid(
+                "duplicate_id",
+                format!("sessions[{i}]"),
+                format!(
+                    "{} is the file {} already given (sessions[{first}]); its runs would be pooled twice",
+                    f.display(),
+                    files[*first].display()
+                ),
+            ));
+        }
+        seen.push((real, i));
+    }
+    Ok(())
+}
+
 /// Standard input can be read once: `-` as a file and as `--options` is
 /// refused before anything is read (the options read an empty input).
 fn stdin_once<'a>(
@@ -300,6 +328,7 @@ fn pool_files(
     // The service's rule of a pool's list, the files named as given.
     let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
     balancing::job::pool::check_names(&names)?;
+    same_file_twice(files)?;
     let under = |i: usize| move |e: InputError| e.under(&format!("sessions[{i}]"));
     let mut parsed = Vec::with_capacity(files.len());
     let mut unreadable = None;

@@ -89,3 +89,38 @@ fn standard_input_given_twice_is_refused_saying_it_is_read_once() {
         assert!(message.contains("standard input"), "{args:?}: {message}");
     }
 }
+
+/// One file named twice in other words (`a.json`, `./a.json`, a link to it)
+/// is refused as the same name twice is: its runs were pooled twice, halving
+/// the coefficients' stated variance.
+#[test]
+fn coefficients_refuses_one_file_named_twice_in_other_words() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a.json");
+    std::fs::write(
+        &file,
+        serde_json::to_vec(&json!({"session": trials(11)})).unwrap(),
+    )
+    .unwrap();
+    let link = dir.path().join("b.json");
+    std::os::unix::fs::symlink(&file, &link).unwrap();
+    let other = dir.path().join("c.json");
+    std::fs::write(
+        &other,
+        serde_json::to_vec(&json!({"session": trials(12)})).unwrap(),
+    )
+    .unwrap();
+    let spelled = format!("{}/./a.json", dir.path().display());
+    for second in [spelled.as_str(), link.to_str().unwrap()] {
+        let (code, v) = fieldbal(&["coefficients", file.to_str().unwrap(), second]);
+        assert_eq!(code, 2, "{second}: {v}");
+        assert_eq!(v["error"]["code"], "duplicate_id", "{v}");
+        assert_eq!(v["error"]["field"], "sessions[1]", "{v}");
+    }
+    let (code, v) = fieldbal(&[
+        "coefficients",
+        file.to_str().unwrap(),
+        other.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{v}");
+}

@@ -43,14 +43,17 @@ use crate::balancing::uncertainty::Propagation;
 /// 97.9–98.4 % (before 88.2–96.2 %), the held-out rotor at two speeds
 /// 97.0–98.6 % (before 95.2–97.4 %).
 ///
-/// Where `C*` is formed (`at_star`: the noise propagated at `C*`) and the
-/// de-noised Gram is positive definite, the rows are conditioned through it
-/// instead (`joint`'s `denoise.rs`; method 8, session 24, amp24 and amp24b,
-/// form (7)), with no move: its centre holds the bias. Measured
+/// Where `C*` is formed (`at_star`: the noise propagated at `C*`), the rows
+/// are conditioned through the de-noised Gram instead (`joint`'s
+/// `denoise.rs`; method 8, session 24, amp24 and amp24b, form (7); since
+/// session 25 with Fuller's small-sample modification, so wherever the
+/// conditioning on all rows is formed), with no
+/// move: its centre holds the bias. Measured
 /// (scripts/issue12_table.py, 1,000 jobs, ten speeds, stated noise): the
 /// held-out rotor at 1000–5500 rpm, 10/15/20 % trials, 98.6/98.6/98.3 % →
 /// 94.7/96.5/96.6 %, every ten-speed case inside 93–97 %; few_speeds.rs at
-/// 100 % trials 98.4 → 96.0 %.
+/// 100 % trials 98.4 → 96.0 %; with the modification (session 25)
+/// few_speeds.rs at 10 % trials 98.8 → 97.3 %.
 pub fn fill(
     fit: &Fit,
     cov: &[Vec<Matrix2<f64>>],

@@ -64,9 +64,10 @@
 //! making up the rest.
 //!
 //! De-noised (session 24, `denoise.rs`): where the caller asks for it
-//! (`Inputs::denoise`, from `C*`) and `G − N` is positive definite, the
-//! correction's error is recovered through the de-noised Gram `ŴᵀD⁻¹Ŵ −
-//! N` (errors in variables, Fuller 1987; method §8, "Session 24, amp24"),
+//! (`Inputs::denoise`, from `C*`), the correction's error is recovered
+//! through the de-noised Gram `ŴᵀD⁻¹Ŵ − cN` (errors in variables, Fuller
+//! 1987, with his small-sample share `c`, session 25; method §8, "Session
+//! 24, amp24"),
 //! its covariance is Fuller's sandwich `V` for every row, and 8.9's product
 //! term is replaced by the product with the observed `δ̃`, split along the
 //! row's own error and conditioned on its prediction (amp24b's form (7);
@@ -106,8 +107,7 @@ pub struct Inputs<'a> {
     /// The readings' covariances, `[row][run]`.
     pub cov: &'a [Vec<Matrix2<f64>>],
     /// Condition through the de-noised Gram (`denoise.rs`, errors in
-    /// variables) where `omega_lambda` is given and `G − N` is positive
-    /// definite.
+    /// variables) where `omega_lambda` is given.
     pub denoise: bool,
 }
 

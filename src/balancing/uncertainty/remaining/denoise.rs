@@ -67,8 +67,9 @@
 //! others, where this conditioning used to give way to the one with `Ŵ`
 //! known and the larger of the moved and unmoved bound), and the bound,
 //! Gaussian about a centre with that heavy-tailed error, held 98.8 % of
-//! few_speeds.rs's rows at 10 % trials (a covariance half as large still
-//! held 94 % there: the excess is in the tails, not the scale). Fuller's
+//! few_speeds.rs's rows at 10 % trials (on a copy of its rotor a
+//! covariance half as large still held 94 %: the excess is in the tails,
+//! not the scale). Fuller's
 //! modification (Fuller 1977, *Econometrica* 45, "Some properties of a
 //! modification of the limited information estimator"; 1987, §2.5.1) takes
 //! off a share `c` of `N` instead of all of it, `H = G − cN`, `δ̃ = H⁻¹(ψ̂
@@ -78,11 +79,12 @@
 //! definite at every job, so the conditioning is formed at every job that
 //! reaches it). Fuller's `λ̂` is the smallest root of the pencil with the
 //! response included; `μ`, without it, is not smaller (interlacing), so `c`
-//! here is at least Fuller's. `α = 4` ([`FULLER_ALPHA`], his smallest mean
-//! square error; the centre is a prediction): few_speeds.rs 98.8 97.9 96.0
-//! → 97.3 97.3 95.9 % at 10/30/100 % trials; `α = 1` (nearly unbiased)
-//! 98.9 %, and `α = 4` keeping the old fallback where `G − N` is not
-//! positive definite 98.2 % at 10 %. At ten speeds `c` is 0.95 and the
+//! here is at least Fuller's. `α = 4` (`FULLER_ALPHA`, his choice for the
+//! smallest mean square error; the centre is a prediction; chosen after
+//! these figures): few_speeds.rs 98.8 97.9 96.0 → 97.3 97.3 95.9 % at
+//! 10/30/100 % trials; `α = 1` (nearly unbiased) 98.9 % at 10 %, and `α =
+//! 4` keeping the old fallback where `G − N` is not positive definite
+//! 98.2 %. At ten speeds `c` is 0.95 and the
 //! table's cases move by 0.0–0.7 points, all inside 93–97 %.
 
 use nalgebra::{Cholesky, DMatrix, DVector, Matrix2, Vector2};
@@ -159,9 +161,10 @@ pub fn of(
     (delta.iter().chain(z.iter()).all(|x| x.is_finite())).then_some(Denoised { delta, z, zh })
 }
 
-/// Fuller's `α` (module doc, "Small-sample modification"): 4, the choice
-/// of smallest mean square error to `O(n⁻²)` (Fuller 1977, §3; 1987, §2.5.1);
-/// `α = 1` is his nearly unbiased one.
+/// Fuller's `α` (module doc, "Small-sample modification"): 4, the choice he
+/// gives for the smallest mean square error to the order of his
+/// approximation (Fuller 1977; 1987, §2.5.1); `α = 1` is his nearly
+/// unbiased one.
 const FULLER_ALPHA: f64 = 4.0;
 
 /// The share `c` of the noise's Gram `N` taken off `G` (module doc, "Small-

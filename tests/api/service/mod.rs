@@ -2,4 +2,5 @@
 //! the API (request ids, limits, time limits).
 
 mod behaviour;
+mod form_files;
 mod serve;

@@ -34,8 +34,9 @@ pub enum Command {
     Solve {
         /// Session JSON (a bare session, or an object with `session` and optional `options`); `-` for standard input.
         file: PathBuf,
-        /// Solve options JSON (overrides options inside FILE).
-        #[arg(long)]
+        /// A file of solve options JSON (`{"objective": "min_max", …}`),
+        /// overriding options inside FILE; `-` for standard input.
+        #[arg(long, value_name = "OPTIONS_FILE")]
         options: Option<PathBuf>,
         #[command(flatten)]
         input: InputArgs,
@@ -54,8 +55,9 @@ pub enum Command {
         /// Session files (as for `solve`), at least one.
         #[arg(required = true)]
         files: Vec<PathBuf>,
-        /// Pooling options JSON (`exclude_disagreeing`, `amplitude_noise_pct`, `phase_noise_deg`).
-        #[arg(long)]
+        /// A file of pooling options JSON (`exclude_disagreeing`,
+        /// `amplitude_noise_pct`, `phase_noise_deg`); `-` for standard input.
+        #[arg(long, value_name = "OPTIONS_FILE")]
         options: Option<PathBuf>,
         #[command(flatten)]
         input: InputArgs,
@@ -387,6 +389,18 @@ mod tests {
         let help = long_help(&["serve"]);
         assert!(help.contains("working directory"), "{help}");
         assert!(help.contains("0.0.0.0:8080"), "{help}");
+    }
+
+    /// `--options` takes a file, not the JSON itself: the help said "Solve
+    /// options JSON", and `--options '{"objective": "min_max"}'` was then
+    /// answered "cannot read {…}: No such file or directory".
+    #[test]
+    fn the_options_flag_says_it_takes_a_file() {
+        for cmd in ["solve", "coefficients"] {
+            let help = long_help(&[cmd]);
+            assert!(help.contains("--options <OPTIONS_FILE>"), "{help}");
+            assert!(help.contains("A file of"), "{help}");
+        }
     }
 
     #[test]

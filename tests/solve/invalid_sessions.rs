@@ -608,3 +608,65 @@ fn a_trial_run_at_another_speed_than_the_reference_names_the_speed_and_states_bo
         "{err:?}"
     );
 }
+
+/// A value of the wrong type is refused in plain words a stand-software
+/// developer reads ("a number", "a whole number ≥ 0", "a list"), not in
+/// Rust's type names ("expected f64", "expected u32", "a sequence"), which
+/// the answers read until session 25's review; the code stays
+/// `invalid_type` and the field is named as before.
+#[test]
+fn a_value_of_the_wrong_type_is_refused_in_plain_words() {
+    type Edit = fn(&mut Value);
+    let cases: &[(Edit, &str, &str)] = &[
+        (
+            |s| s["runs"][0]["readings"][0]["amplitude"] = json!("x"),
+            "runs[0].readings[0].amplitude",
+            r#"expected a number, got text "x""#,
+        ),
+        (
+            |s| s["planes"][0]["positions"] = json!(-1),
+            "planes[0].positions",
+            "expected a whole number from 0 to 4294967295, got -1",
+        ),
+        (
+            |s| s["planes"][0]["positions"] = json!(2.5),
+            "planes[0].positions",
+            "expected a whole number from 0 to 4294967295, got 2.5",
+        ),
+        (
+            |s| s["runs"][0]["readings"] = json!({"a": 1}),
+            "runs[0].readings",
+            "expected a list, got an object",
+        ),
+        (
+            |s| s["name"] = json!(5),
+            "name",
+            "expected text, got 5",
+        ),
+        (
+            |s| s["planes"][0]["places_deg"] = json!([0, true]),
+            "planes[0].places_deg[1]",
+            "expected a number, got true",
+        ),
+        (
+            |s| s["runs"][0]["weights"] = json!(null),
+            "runs[0].weights",
+            "expected a list, got null",
+        ),
+        (
+            |s| s["sensors"][0]["unit"] = json!("um"),
+            "sensors[0].unit",
+            "expected one of `um_pp`, `mils_pp`, `mm_s_rms`, `mm_s_pk`, `in_s_pk`, `g_pk`, got `um`",
+        ),
+    ];
+    for (edit, field, message) in cases {
+        let mut session = base();
+        edit(&mut session);
+        let err =
+            balancing::parse_session(&serde_json::to_vec(&session).unwrap()).expect_err(field);
+        assert_eq!(
+            (err.code, err.field.as_deref(), err.message.as_str()),
+            ("invalid_type", Some(*field), *message)
+        );
+    }
+}

@@ -224,14 +224,11 @@ pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {
                 }
             };
             let key = |rest: &str| rest.split('`').next().unwrap_or_default().to_string();
-            // A wire struct's visitor expects "a JSON object, not an array",
-            // which reads wrongly when a null or a number was given.
-            let message = match message.strip_suffix(crate::balancing::wire::NOT_AN_OBJECT) {
-                Some(head) if !message.starts_with("invalid type: sequence") => {
-                    format!("{head}a JSON object")
-                }
-                _ => message.to_string(),
-            };
+            // serde's wording ("invalid type: string \"x\", expected f64")
+            // in plain words ("expected a number, got text \"x\""); a wire
+            // struct's "a JSON object, not an array" reads "an object" when
+            // a null or a number was given.
+            let message = super::words::plain(message);
             let message = message.as_str();
             let (code, field) = if let Some(rest) = message.strip_prefix("missing field `") {
                 ("missing_field", named(&key(rest)))
@@ -322,7 +319,7 @@ mod tests {
             // 422 invalid_type, like any other value of the wrong type (v1).
             assert_eq!(err.kind, ErrorKind::Invalid, "{err:?}");
             assert_eq!(err.code, "invalid_type");
-            assert!(err.message.ends_with(crate::balancing::wire::NOT_AN_OBJECT));
+            assert!(err.message.ends_with("not a list"), "{}", err.message);
             assert_eq!(err.field.as_deref(), field);
         }
         let err = from_json::<crate::balancing::SolveRequest>(br#"[{}, {}]"#).unwrap_err();

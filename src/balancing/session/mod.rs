@@ -13,3 +13,4 @@ pub mod phasor;
 pub mod select;
 pub mod trig;
 pub mod validate;
+pub mod words;

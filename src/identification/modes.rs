@@ -21,14 +21,14 @@ pub fn solve(m: &DMatrix<f64>, k: &DMatrix<f64>) -> Result<Modes, InputError> {
     let chol = m.clone().cholesky().ok_or_else(|| {
         InputError::unsolvable(
             "mass_not_positive_definite",
-            "the mass matrix M = M0 + Σ mᵢ Mᵢ is not positive definite for these parameters",
+            "the mass matrix (mass.fixed plus the mass parameters times mass.parameters) is not positive definite for these parameters: every motion of the model needs a positive mass; check the signs and sizes of the mass entries",
         )
     })?;
     let l = chol.l();
     let l_inv = l.clone().try_inverse().ok_or_else(|| {
         InputError::unsolvable(
             "mass_not_positive_definite",
-            "the Cholesky factor of M is singular",
+            "the mass matrix (mass.fixed plus the mass parameters times mass.parameters) is singular for these parameters: check the signs and sizes of the mass entries",
         )
     })?;
     let mut a = &l_inv * k * l_inv.transpose();

@@ -305,7 +305,7 @@ pub fn fit(setup: &Setup, points: &[Point]) -> Result<Fit, InputError> {
         y[2 * r] = v.re;
         y[2 * r + 1] = v.im;
     }
-    let plain = lsq::solve(a.clone(), &y, "the one-mass model (6.1)")?;
+    let plain = lsq::solve(a.clone(), &y, "the one-mass model (method §6)")?;
     let to_fit = |x: &DVector<f64>| {
         let mut k = 2;
         let mut next = || {

@@ -161,7 +161,7 @@ pub fn frequencies(w2: &[f64], from: &str) -> Result<Vec<f64>, InputError> {
         let f = x.max(0.0).sqrt() / std::f64::consts::TAU;
         if !(f.is_finite() && (lo..=hi).contains(&f)) {
             let negative = if x < 0.0 {
-                " (a negative ω²: the stiffness is not positive definite)"
+                " (a negative squared frequency: the stiffness matrix is not positive definite)"
             } else {
                 ""
             };

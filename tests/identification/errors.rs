@@ -372,3 +372,64 @@ async fn empty_or_repeated_selections_are_refused_like_the_solves() {
     );
     server.shutdown().await;
 }
+
+/// True when `message` reads without the method's formula numbers ("(7.1)")
+/// or its symbols ("e^{-2nτ}", "κ", "ω²", "Σ"), which a technician at the
+/// stand cannot look up; "method §7" may stay.
+fn plain_words(message: &str) -> bool {
+    let formula_number = message.as_bytes().windows(5).any(|w| {
+        w[0] == b'('
+            && w[1].is_ascii_digit()
+            && w[2] == b'.'
+            && w[3].is_ascii_digit()
+            && w[4] == b')'
+    });
+    !formula_number
+        && !message.contains("e^")
+        && !message.chars().any(|c| "τωζκσλχψθφΣ√²ᵢ".contains(c))
+}
+
+/// Refusals whose messages quoted the method's formulas: "(the fit (7.1)
+/// gave e^{-2nτ} ≤ 0)", "of the form a0/(1 + λt) cos(ωt + ψ0)", "the
+/// cross-coupling ratio κ of q = κ·b·ω", "M = M0 + Σ mᵢ Mᵢ" (session 25's
+/// review). They now say it in words.
+#[tokio::test]
+async fn refusals_are_worded_without_formula_numbers_or_symbols() {
+    let half_rate: Vec<f64> = (0..100)
+        .map(|k| if k % 2 == 0 { 1.0 } else { -1.0 } * 0.99f64.powi(k))
+        .collect();
+    let decay = |law: &str| json!({"samples": half_rate, "dt_s": 0.01, "damping": law});
+    let cases: Vec<(&str, &str, Value)> = vec![
+        (
+            "viscous at half the sampling rate",
+            "free-decay",
+            decay("viscous"),
+        ),
+        (
+            "turbulent at half the sampling rate",
+            "free-decay",
+            decay("turbulent"),
+        ),
+        (
+            "cross-coupling ratio out of range",
+            "rotor",
+            rotor_with(|v| v["options"]["cross_coupling_ratio"] = json!(50)),
+        ),
+        (
+            "a negative mass",
+            "model",
+            with(model_request(), |v| {
+                v["mass"]["fixed"] = json!([[-1.0, 0.0], [0.0, 1.0]])
+            }),
+        ),
+    ];
+    let (_dir, server, client) = fresh_server().await;
+    for (name, what, body) in cases {
+        let url = server.url(&format!("/api/v1/identify/{what}"));
+        let (status, _, answer) = post(&client, &url, &body).await;
+        assert_eq!(status, 422, "{name}: {answer}");
+        let message = answer["error"]["message"].as_str().unwrap();
+        assert!(plain_words(message), "{name}: {message}");
+    }
+    server.shutdown().await;
+}

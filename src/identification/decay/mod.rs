@@ -345,7 +345,7 @@ fn above_noise(y: &[f64], got: &FreeDecay, fit_offset: bool) -> Result<(), Input
         return Ok(());
     }
     Err(not_oscillatory(format!(
-        "no decaying oscillation found in the samples: the fitted decay explains {:.1} % of their variance, no more than such a fit explains of pure noise (F = {f:.2}, below {MIN_F})",
+        "no decaying oscillation found in the samples: the fitted decay explains {:.1} % of their variance, no more than such a fit explains of pure noise (its F ratio {f:.2} is below {MIN_F}, method §7)",
         100.0 * (1.0 - rss / tss).max(0.0)
     )))
 }
@@ -455,7 +455,7 @@ fn centred(y: &[f64], with_offset: bool) -> (Vec<f64>, f64) {
 /// `2 y_{k−1} − y_{k−2}`), the recurrence without it answers.
 fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), InputError> {
     let rows = y.len() - 2;
-    let what = "the viscous decay model (7.1)";
+    let what = "the viscous decay model (method §7)";
     let b = DVector::from_iterator(rows, y[2..].iter().copied());
     let plain = || lsq::solve(DMatrix::from_fn(rows, 2, |r, j| y[r + 1 - j]), &b, what);
     let l = if with_offset {
@@ -467,7 +467,7 @@ fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), Inpu
     let ratio = -l[1];
     if ratio.is_nan() || ratio <= 0.0 {
         return Err(not_oscillatory(
-            "no decaying oscillation found in the samples: they die away too fast to show one (damping near or above critical), swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), or are not a free decay; record more samples a period, or excite a less damped mode (the fit (7.1) gave e^{-2nτ} ≤ 0)",
+            "no decaying oscillation found in the samples: they die away too fast to show one (damping near or above critical), swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), or are not a free decay; record more samples a period, or excite a less damped mode (method §7: the fit gave no rate at which the swings shrink)",
         ));
     }
     let n = -ratio.ln() / (2.0 * tau);
@@ -478,7 +478,7 @@ fn recurrence(y: &[f64], tau: f64, with_offset: bool) -> Result<(f64, f64), Inpu
 
 /// The turbulent law (7.2) finds no decay in the samples; the likely causes
 /// besides a record that is no free decay, with what to do.
-const NO_TURBULENT_DECAY: &str = "no decaying oscillation found in the samples of the form a0/(1 + λt) cos(ωt + ψ0): they swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), die away too fast to show one, or are not a free decay";
+const NO_TURBULENT_DECAY: &str = "no decaying oscillation found in the samples with an amplitude shrinking as a turbulent decay's does (method §7): they swing at half the sampling rate or faster (two samples a period or fewer: record with a shorter dt_s), die away too fast to show one, or are not a free decay";
 
 /// Viscous damping (7.1): `λ1 = 2 e^{−nτ} cos(ω_d τ)`, `λ2 = −e^{−2nτ}`.
 ///
@@ -581,7 +581,7 @@ fn turbulent_model(y: &[f64]) -> Result<(f64, f64), InputError> {
         }
     });
     let b = DVector::from_iterator(rows, (2..y.len()).map(|k| y[k] + y[k - 2]));
-    let p = lsq::solve(a, &b, "the turbulent decay model (7.2)")?;
+    let p = lsq::solve(a, &b, "the turbulent decay model (method §7)")?;
     let theta = angle_per_step(p[0] / 2.0)?;
     half_a_period(theta, y.len())?;
     let l = -p[1];

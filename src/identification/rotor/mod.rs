@@ -153,7 +153,7 @@ fn check_options(o: &RotorOptions) -> Result<(Option<(f64, f64)>, Setup), InputE
             || "options.cross_coupling_ratio".into(),
             k,
             (-ranges::CROSS_COUPLING_RATIO, ranges::CROSS_COUPLING_RATIO),
-            "the cross-coupling ratio κ of q = κ·b·ω",
+            "the cross-coupling ratio (the cross-coupling stiffness over the damping coefficient times the speed)",
         )?),
         (None, CrossCoupling::Estimated) => Coupling::Estimated,
         (None, CrossCoupling::Zero) => Coupling::Zero,
@@ -272,7 +272,7 @@ fn fit_one(
     let resolution = damping::resolution(&fit, setup, &points);
     let unresolved = resolution.is_some_and(|r| zeta.abs() < r);
     if !(wn.is_finite() && zeta.is_finite() && wn > 0.0 && (zeta > 0.0 || unresolved)) {
-        warn(out, "no_mode", &plane.id, format!("{label}: the fit has no damped critical speed (c/m = {:.4e}, b/m = {:.4e}); the data do not show a resonance of one mode", fit.c / fit.m, fit.b / fit.m));
+        warn(out, "no_mode", &plane.id, format!("{label}: the fit has no damped critical speed (c_over_m {:.4e} 1/s², b_over_m {:.4e} 1/s, as answered); the data do not show a resonance of one mode", fit.c / fit.m, fit.b / fit.m));
         return Ok(());
     }
     let measured: Vec<Complex64> = rows.iter().map(|&a| w[(a, p)]).collect();
@@ -324,7 +324,7 @@ fn fit_one(
     let resolved = !damping.bounds
         && split.is_some_and(|(rb, _)| damping::split_resolved(setup, points.len(), b_over_m, rb));
     if !damping.bounds && !resolved {
-        warn(out, "damping_split_unresolved", &plane.id, format!("{label}: the readings give the damping ratio of the mode at {critical:.0} rpm, but cannot split it into direct damping and cross-coupling (b/m {b_over_m:.3e} 1/s, resolution {}{}); neither coefficient is given. Fit with cross_coupling \"zero\" if the rotor has none, or read more speeds across the resonance", split.map_or("none".to_string(), |(rb, _)| format!("{rb:.2e}")), if setup.coupling == Coupling::Estimated { format!("; with the cross-coupling estimated b/m must exceed {} resolutions, with at least {} degrees of freedom", damping::SPLIT_CLEARANCE, damping::SPLIT_MIN_DOF) } else { String::new() }));
+        warn(out, "damping_split_unresolved", &plane.id, format!("{label}: the readings give the damping ratio of the mode at {critical:.0} rpm, but cannot split it into direct damping and cross-coupling (b_over_m {b_over_m:.3e} 1/s, resolution {}{}); neither coefficient is given. Fit with cross_coupling \"zero\" if the rotor has none, or read more speeds across the resonance", split.map_or("none".to_string(), |(rb, _)| format!("{rb:.2e}")), if setup.coupling == Coupling::Estimated { format!("; with the cross-coupling estimated b/m must exceed {} resolutions, with at least {} degrees of freedom", damping::SPLIT_CLEARANCE, damping::SPLIT_MIN_DOF) } else { String::new() }));
     }
     out.results.push(RotorResult {
         sensor: sensor.id.clone(),

@@ -267,3 +267,40 @@ async fn bad_places_kits_and_fit_options_are_named_by_field() {
     );
     server.shutdown().await;
 }
+
+/// A plane given both `positions` and `places_deg` is refused wherever a
+/// session comes in, naming `places_deg` and saying to give one of them
+/// (session 25's review reported it answered 200 with `split: []`; /solve
+/// and /trial-weights are in the table above, this covers the store, a
+/// session stored before its runs, and identification).
+#[tokio::test]
+async fn positions_and_places_deg_together_are_refused_on_every_path() {
+    let (_dir, server, client) = fresh_server().await;
+    let both = with(|s| s["planes"][1]["positions"] = json!(6));
+    let mut runless = both.clone();
+    runless["runs"] = json!([]);
+    let cases = [
+        ("/api/v1/sessions", both.clone(), "planes[1].places_deg"),
+        ("/api/v1/sessions", runless, "planes[1].places_deg"),
+        (
+            "/api/v1/identify/rotor",
+            json!({"session": both}),
+            "session.planes[1].places_deg",
+        ),
+    ];
+    for (path, body, field) in cases {
+        let (status, _, answer) = post(&client, &server.url(path), &body).await;
+        let error = &answer["error"];
+        assert_eq!(
+            (status, error["code"].as_str(), error["field"].as_str()),
+            (422, Some("conflicting_fields"), Some(field)),
+            "{path}: {answer}"
+        );
+        let message = error["message"].as_str().unwrap();
+        assert!(
+            message.contains("positions") && message.contains("not both"),
+            "{path}: {message}"
+        );
+    }
+    server.shutdown().await;
+}

@@ -670,3 +670,66 @@ fn a_value_of_the_wrong_type_is_refused_in_plain_words() {
         );
     }
 }
+
+/// A word field (`purpose`, `conventions.phase`) given a number, `true` or
+/// `null` is well-formed JSON of the wrong type: 422 `invalid_type` naming
+/// it, as the contract says for `purpose` ("any other value"). serde_json
+/// reads a word from text only and said "expected value", which was taken
+/// for a bare NaN and answered 400 `malformed_json` (found in session 25).
+#[test]
+fn a_word_field_given_a_number_is_a_wrong_type_not_malformed_json() {
+    type Edit = fn(&mut Value);
+    let cases: &[(Edit, &str, &str)] = &[
+        (
+            |s| s["runs"][1]["purpose"] = json!(5),
+            "runs[1].purpose",
+            "expected text (one of the field's words), got 5",
+        ),
+        (
+            |s| s["conventions"] = json!({"phase": true}),
+            "conventions.phase",
+            "expected text (one of the field's words), got true",
+        ),
+        (
+            |s| s["sensors"][0]["unit"] = json!(null),
+            "sensors[0].unit",
+            "expected text (one of the field's words), got null",
+        ),
+        (
+            |s| s["sensors"][0]["unit"] = json!([1, 2]),
+            "sensors[0].unit",
+            "expected text (one of the field's words), got a list",
+        ),
+    ];
+    for (edit, field, message) in cases {
+        let mut session = base();
+        edit(&mut session);
+        // On one line and over many (serde_json counts lines and columns).
+        for bytes in [
+            serde_json::to_vec(&session).unwrap(),
+            serde_json::to_vec_pretty(&session).unwrap(),
+        ] {
+            let err = balancing::parse_session(&bytes).expect_err(field);
+            assert_eq!(
+                (
+                    err.kind,
+                    err.code,
+                    err.field.as_deref(),
+                    err.message.as_str()
+                ),
+                (ErrorKind::Invalid, "invalid_type", Some(*field), *message)
+            );
+        }
+    }
+    // A bare NaN there is still not JSON.
+    let text =
+        serde_json::to_string(&base())
+            .unwrap()
+            .replacen(r#""unit":"um_pp""#, r#""unit":NaN"#, 1);
+    assert!(text.contains("NaN"));
+    let err = balancing::parse_session(text.as_bytes()).unwrap_err();
+    assert_eq!(
+        (err.kind, err.code),
+        (ErrorKind::Malformed, "malformed_json")
+    );
+}

@@ -145,11 +145,55 @@ pub fn from_json_tracked<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, InputEr
         let path = err.path().to_string();
         let inner = err.into_inner();
         let path = if path == "." { String::new() } else { path };
-        classify(path, &inner)
+        word_given_another_value(bytes, &path, &inner).unwrap_or_else(|| classify(path, &inner))
     })?;
     // Only whitespace may follow the value: `{...} x` is not one JSON document.
     de.end().map_err(|err| classify(String::new(), &err))?;
     Ok(value)
+}
+
+/// A word field (an enum: `purpose`, `conventions.phase`, a sensor's `unit`)
+/// given a number, `true`, `null` or a list: serde_json reads a word from
+/// text only and stops with "expected value", as at a bare `NaN`. Where a
+/// whole JSON value does start there, the input is well-formed and of the
+/// wrong type: 422 `invalid_type` naming the field (the contract's rule for
+/// `purpose`), not 400 `malformed_json`. `None` for anything else.
+fn word_given_another_value(
+    bytes: &[u8],
+    path: &str,
+    err: &serde_json::Error,
+) -> Option<InputError> {
+    if path.is_empty()
+        || err.classify() != serde_json::error::Category::Syntax
+        || strip_position(&err.to_string()) != "expected value"
+    {
+        return None;
+    }
+    // serde_json counts lines from 1 and columns in bytes from 1.
+    let line_start = if err.line() <= 1 {
+        0
+    } else {
+        let mut newlines = bytes.iter().enumerate().filter(|&(_, &b)| b == b'\n');
+        newlines.nth(err.line() - 2)?.0 + 1
+    };
+    let at = line_start + err.column().checked_sub(1)?;
+    let rest = bytes.get(at..)?;
+    let given = serde_json::Deserializer::from_slice(rest)
+        .into_iter::<serde_json::Value>()
+        .next()?
+        .ok()?;
+    let shown = match &given {
+        serde_json::Value::Array(_) => "a list".to_string(),
+        serde_json::Value::Object(_) => "an object".to_string(),
+        serde_json::Value::String(_) => return None,
+        other => other.to_string(),
+    };
+    Some(InputError {
+        kind: ErrorKind::Invalid,
+        code: "invalid_type",
+        message: format!("expected text (one of the field's words), got {shown}"),
+        field: Some(path.to_string()),
+    })
 }
 
 pub(crate) fn classify(path: String, err: &serde_json::Error) -> InputError {

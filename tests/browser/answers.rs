@@ -3,7 +3,8 @@
 //! the page still shows while the new one is out (it waited for any row of
 //! corrections, so a test after a re-solve could pass on the old answer).
 //! An answer that comes back after another job was opened stays with its
-//! own job (it was shown as the other job's corrections).
+//! own job (it was shown as the other job's corrections), and so does a
+//! refusal (its banner was shown on the other job's step).
 //! The report's kit weights to fit are in grams to 0.1 g, as the answer
 //! page and the report's other tables give them (it gave "10.00").
 
@@ -205,6 +206,60 @@ async fn an_answer_that_comes_back_after_another_job_is_opened_stays_with_its_jo
         shown,
         json!(["Other job · stored", false, false]),
         "the other job shows no answer of the first, and can be solved"
+    );
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_job() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    session["name"] = json!("Other job");
+    let other = post(&stand, "/api/v1/sessions", session.clone()).await;
+    let other = other["id"].as_str().expect("stored").to_string();
+    // The zero run alone: the service refuses to solve it (too few trial runs).
+    session["name"] = json!("Refused job");
+    session["runs"] = json!([session["runs"][0].clone()]);
+    let refused = post(&stand, "/api/v1/solve", json!({ "session": session })).await;
+    assert!(refused["error"]["message"].is_string(), "{refused}");
+    opened(&stand, &session).await;
+    // The refusal is held back for three seconds, as on a slow stand PC.
+    js(
+        b,
+        "const f = window.fetch; \
+         window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
+           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
+         return true",
+    )
+    .await;
+    b.click("#step-solve button.solve").await;
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click(&format!(
+        "#step-sessions button.open-session[data-id=\"{other}\"]"
+    ))
+    .await;
+    b.wait_until(
+        "the other job is open",
+        "return document.querySelector('#job-title').textContent.startsWith('Other job')",
+    )
+    .await;
+    b.click("nav [data-step=\"solve\"]").await;
+    b.wait_until(
+        "the first job's refusal is back",
+        "const s = document.querySelector('#step-solve'); return !!s.dataset.solves && s.dataset.solves === s.dataset.settled",
+    )
+    .await;
+    let shown = js(
+        b,
+        "const s = document.querySelector('#step-solve'), e = s.querySelector('.banner.error'); \
+         return [document.querySelector('#job-title').textContent, e && !e.hidden ? e.textContent : null, document.querySelectorAll('.field.bad').length, s.querySelector('button.solve').disabled]",
+    )
+    .await;
+    assert_eq!(
+        shown,
+        json!(["Other job · stored", null, 0, false]),
+        "the other job shows no refusal of the first ({refused}), and can be solved"
     );
     stand.stop().await;
 }

@@ -178,6 +178,8 @@ async function solve(root, rerender) {
     }
   } catch (err) {
     settled();
+    // Nor its refusal: drawn afresh for the job now open.
+    if (state.id !== id) return rerender();
     if (button) {
       button.disabled = false;
       button.focus();

@@ -6,7 +6,9 @@
 //! own job (it was shown as the other job's corrections), and so does a
 //! refusal (its banner was shown on the other job's step).
 //! The report's kit weights to fit are in grams to 0.1 g, as the answer
-//! page and the report's other tables give them (it gave "10.00").
+//! page and the report's other tables give them (it gave "10.00"), and the
+//! RMS and largest the kit weights leave are to one decimal, as the summary
+//! box gives the exact corrections' (the lines gave "3.21" beside its "3.2").
 
 use serde_json::{json, Value};
 
@@ -261,5 +263,46 @@ async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_jo
         json!(["Other job · stored", null, 0, false]),
         "the other job shows no refusal of the first ({refused}), and can be solved"
     );
+    stand.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box() {
+    let stand = Stand::start().await;
+    let b = &stand.browser;
+    let (mut session, _) = example_session("pump-two-plane-exact.json");
+    for p in session["planes"].as_array_mut().unwrap() {
+        p["positions"] = json!(12);
+        p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
+    }
+    opened(&stand, &session).await;
+    b.click("#step-solve button.solve").await;
+    b.wait_for("#step-solve .fit-summary").await;
+    let service = post(
+        &stand,
+        "/api/v1/solve",
+        json!({ "session": session, "options": { "discrete": true } }),
+    )
+    .await;
+    let figure = |k: &str| fmt(service["fit_summary"][k].as_f64().unwrap(), 1);
+    let (rms, max) = (figure("rms_after"), figure("max_after"));
+    // The summary box's RMS after the exact corrections, as it shows it.
+    let boxed = b.text("#step-solve .summary .big .value").await;
+    let exact = boxed.rsplit(' ').next().unwrap().to_string();
+    assert_eq!(
+        exact,
+        fmt(service["summary"]["rms_after"].as_f64().unwrap(), 1),
+        "{boxed}"
+    );
+    let said = b.text("#step-solve .fit-summary").await;
+    let want = format!(
+        "With the kit weights shown: RMS {rms} µm pk-pk, largest {max} µm pk-pk predicted after (the exact corrections above: RMS {exact} µm pk-pk)."
+    );
+    assert!(said.starts_with(&want), "{said:?} should start {want:?}");
+    b.click("nav [data-step=\"report\"]").await;
+    b.wait_for("#step-report .report-fit p").await;
+    let said = b.text("#step-report .report-fit p").await;
+    let want = format!("With these weights: RMS {rms} µm pk-pk, max {max} µm pk-pk");
+    assert!(said.starts_with(&want), "{said:?} should start {want:?}");
     stand.stop().await;
 }

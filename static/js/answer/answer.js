@@ -171,7 +171,7 @@ function fitSummary(sol) {
   const unit = unitOrMix(sol.predicted_residual);
   const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
   return h("p", { class: "fit-summary" },
-    `With the kit weights shown: RMS ${fmt(f.rms_after, 2)}${u}, largest ${fmt(f.max_after, 2)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 2)}${u}). `,
+    `With the kit weights shown: RMS ${fmt(f.rms_after, 1)}${u}, largest ${fmt(f.max_after, 1)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 1)}${u}). `,
     f.optimal ? "The best choice the kits allow." : "The best choice found in the time allowed, not proven the best.");
 }
 

@@ -22,7 +22,7 @@ function fitTable(sol) {
       h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
         h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
           h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 1) : "–")))))),
-    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 2)}${u}, max ${fmt(sol.fit_summary.max_after, 2)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
+    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 1)}${u}, max ${fmt(sol.fit_summary.max_after, 1)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
 }
 
 /** "(lag)" or "(lead)", for a column of phases. */

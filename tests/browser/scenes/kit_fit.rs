@@ -109,7 +109,7 @@ pub async fn kit_fit_is_drawn_where_it_goes(stand: &Stand, id: &str) {
     let fitted = b.text("#step-solve .fit-summary").await;
     let want = format!(
         "With the kit weights shown: RMS {}",
-        fmt(service["fit_summary"]["rms_after"].as_f64().unwrap(), 2)
+        fmt(service["fit_summary"]["rms_after"].as_f64().unwrap(), 1)
     );
     assert!(
         fitted.starts_with(&want),

@@ -28,8 +28,8 @@ export function verdict(sol) {
   const unit = unitOrMix(sol.predicted_residual);
   const u = unit ? ` ${unit}` : "";
   return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
-    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, at or below the limit of ${fmt(limit, 1)}${u}. No more weights are needed.`
-      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max, 1)}${u}, above the limit of ${fmt(limit, 1)}${u}. Fit the weights below and do a check run.`);
+    ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${fmt(max)}${u}, at or below the limit of ${fmt(limit)}${u}. No more weights are needed.`
+      : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${fmt(max)}${u}, above the limit of ${fmt(limit)}${u}. Fit the weights below and do a check run.`);
 }
 
 /**
@@ -53,7 +53,7 @@ function verdictByUnit(sol, run) {
   }
   if (!parts.length) return "";
   const ok = parts.every((p) => p.max <= p.limit);
-  const each = parts.map((p) => `${fmt(p.max, 1)} ${p.unit} ${p.max <= p.limit ? "at or below" : "above"} the limit of ${fmt(p.limit, 1)} ${p.unit}`).join("; ");
+  const each = parts.map((p) => `${fmt(p.max)} ${p.unit} ${p.max <= p.limit ? "at or below" : "above"} the limit of ${fmt(p.limit)} ${p.unit}`).join("; ");
   return h("div", { class: `verdict ${ok ? "ok" : "not-yet"}`, role: "status" },
     ok ? `Within tolerance: the largest vibration in run “${run.id}” is ${each}. No more weights are needed.`
       : `Not yet within tolerance: the largest vibration in run “${run.id}” is ${each}. Fit the weights below and do a check run.`);
@@ -67,8 +67,8 @@ export function trimWords(sol) {
     h("h3", {}, `Trim: the rotor as it is in run “${sol.from_run}”${run ? ` (${run.weights.length} weight${run.weights.length === 1 ? "" : "s"} on)` : ""}; angles ${angleWords(sol.conventions || state.setup.conventions)} from the mark`),
     h("ul", {}, sol.corrections.map((c) => h("li", { dataset: { plane: c.plane } },
       // A doubtful trim is said, not shouted: no bold for a weight that may be far off.
-      c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h(doubt(sol, c) ? "span" : "strong", { class: doubt(sol, c) ? "doubtful" : null }, `Plane ${c.plane}: add ${fmt(c.mass_g, 1)} g at ${fmtAngle(c.angle_deg)} to what is on now`),
-      c.total ? `, or replace the weights in this plane by one weight of ${fmt(c.total.mass_g, 1)} g at ${fmtAngle(c.total.angle_deg)}.` : "."))));
+      c.mass_g < 0.05 ? h("strong", {}, `Plane ${c.plane}: nothing to add`) : h(doubt(sol, c) ? "span" : "strong", { class: doubt(sol, c) ? "doubtful" : null }, `Plane ${c.plane}: add ${fmt(c.mass_g)} g at ${fmtAngle(c.angle_deg)} to what is on now`),
+      c.total ? `, or replace the weights in this plane by one weight of ${fmt(c.total.mass_g)} g at ${fmtAngle(c.total.angle_deg)}.` : "."))));
 }
 
 /** The unit of a sensor of the set-up, in words. */
@@ -80,9 +80,9 @@ function unitOf(sensor) {
 function checkRow(r) {
   return h("tr", { class: r.measured > r.amplitude_95 ? "above95" : "" },
     h("td", {}, fmt(r.speed_rpm, 0)), h("td", {}, r.sensor),
-    h("td", { class: "measured" }, `${fmt(r.measured, 1)} at ${fmtAngle(r.measured_phase_deg)}`),
-    h("td", { class: "predicted" }, `${fmt(r.predicted, 1)} at ${fmtAngle(r.predicted_phase_deg)}`),
-    h("td", {}, `≤ ${fmt(r.amplitude_95, 1)}`),
+    h("td", { class: "measured" }, `${fmt(r.measured)} at ${fmtAngle(r.measured_phase_deg)}`),
+    h("td", { class: "predicted" }, `${fmt(r.predicted)} at ${fmtAngle(r.predicted_phase_deg)}`),
+    h("td", {}, `≤ ${fmt(r.amplitude_95)}`),
     h("td", { class: "unit" }, unitOf(r.sensor)));
 }
 
@@ -116,8 +116,8 @@ export function runChecks(sol) {
     h("h3", {}, "Runs beside their predictions"),
     sol.run_checks.map((c) => h("div", { class: `run-check ${c.consistent ? "agrees" : "differs"}`, dataset: { run: c.run } },
       h("p", {}, h("strong", {}, `Run “${c.run}”: `), c.consistent
-        ? `agrees with what ${from.what} ${from.verb} for its weights (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted).`
-        : `differs from what ${from.what} ${from.verb} for its weights by more than ${scatter} explains (RMS ${fmt(c.rms_measured, 1)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted, 1)}${rowsUnit(c.rows)} predicted). ${then}`),
+        ? `agrees with what ${from.what} ${from.verb} for its weights (RMS ${fmt(c.rms_measured)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted)}${rowsUnit(c.rows)} predicted).`
+        : `differs from what ${from.what} ${from.verb} for its weights by more than ${scatter} explains (RMS ${fmt(c.rms_measured)}${rowsUnit(c.rows)} measured, ${fmt(c.rms_predicted)}${rowsUnit(c.rows)} predicted). ${then}`),
       h("div", { class: "scroll" }, h("table", { class: "check-table" },
         h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, `Measured, at phase ${phaseWords(sol)}`), h("th", {}, `Predicted, at phase ${phaseWords(sol)}`), h("th", {}, "95 % bound"), h("th", {}, "Unit"))),
         h("tbody", {}, c.rows.map(checkRow)))),
@@ -171,7 +171,7 @@ function fitSummary(sol) {
   const unit = unitOrMix(sol.predicted_residual);
   const u = unit ? ` ${unit.startsWith("mixed") ? `(${unit})` : unit}` : "";
   return h("p", { class: "fit-summary" },
-    `With the kit weights shown: RMS ${fmt(f.rms_after, 1)}${u}, largest ${fmt(f.max_after, 1)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after, 1)}${u}). `,
+    `With the kit weights shown: RMS ${fmt(f.rms_after)}${u}, largest ${fmt(f.max_after)}${u} predicted after (the exact corrections above: RMS ${fmt(sol.summary.rms_after)}${u}). `,
     f.optimal ? "The best choice the kits allow." : "The best choice found in the time allowed, not proven the best.");
 }
 

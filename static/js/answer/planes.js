@@ -47,7 +47,7 @@ export function stacks(weights) {
 
 /** A stack in words: "10.0 g + 5.0 g at 240.0° (place 8)". */
 export function stackWords(x) {
-  return `${x.masses.map((m) => `${fmt(m, 1)} g`).join(" + ")} at ${fmtAngle(x.angle)}${x.place !== undefined ? ` (place ${x.place})` : ""}`;
+  return `${x.masses.map((m) => `${fmt(m)} g`).join(" + ")} at ${fmtAngle(x.angle)}${x.place !== undefined ? ` (place ${x.place})` : ""}`;
 }
 
 /** Screen angle (clockwise from the top) of a weight angle in the session's direction. */
@@ -97,7 +97,7 @@ export function planePicture(plane, solution, correction, direction) {
     const [lx, ly] = at(w.angle, direction, nearMark ? R - 34 : R + 30);
     const total = w.masses.reduce((a, b) => a + b, 0);
     svg.append(s("circle", { cx: wx, cy: wy, r: 9, class: "weight" }));
-    svg.append(s("text", { x: lx, y: ly + 4, class: "label weight-label", "text-anchor": "middle" }, `${fmt(total, 1)} g`));
+    svg.append(s("text", { x: lx, y: ly + 4, class: "label weight-label", "text-anchor": "middle" }, `${fmt(total)} g`));
   }
   return h("figure", { class: "plane-fig", dataset: { plane: plane.id } },
     h("figcaption", {}, `Plane ${plane.id}: ${kind}`),

@@ -96,7 +96,7 @@ export function doubt(solution, c) {
   const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
   const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
   if (dm > 0.25 * c.mass_g || da > 20) {
-    return `The 95 % figures for plane ${c.plane} are wide (± ${fmt(dm, 1)} g, ± ${fmt(da, 0)}°): the weight may be well off. Fit it, then do a check run and trim; or repeat the trial run with a bigger weight first.`;
+    return `The 95 % figures for plane ${c.plane} are wide (± ${fmt(dm)} g, ± ${fmt(da, 0)}°): the weight may be well off. Fit it, then do a check run and trim; or repeat the trial run with a bigger weight first.`;
   }
   return null;
 }

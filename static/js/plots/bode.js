@@ -53,7 +53,7 @@ export function bodePlot({ sensor, unit, phase, series }) {
   for (let i = 0; i <= 4; i++) {
     const v = (top * i) / 4;
     svg.append(s("line", { x1: PAD_L, x2: W - PAD_R, y1: ya(v), y2: ya(v), class: "grid" }));
-    svg.append(s("text", { x: PAD_L - 4, y: ya(v) + 3, class: "tick", "text-anchor": "end" }, fmt(v, 1)));
+    svg.append(s("text", { x: PAD_L - 4, y: ya(v) + 3, class: "tick", "text-anchor": "end" }, fmt(v)));
   }
   for (const v of [0, 90, 180, 270, 360]) {
     svg.append(s("line", { x1: PAD_L, x2: W - PAD_R, y1: yp(v === 360 ? 359.999 : v), y2: yp(v === 360 ? 359.999 : v), class: "grid" }));
@@ -95,7 +95,7 @@ export function nyquistPlot({ sensor, unit, phase, points }) {
   };
   const svg = s("svg", { viewBox: `0 0 ${size} ${size}`, class: "nyquist", role: "img", "aria-label": `Polar plot across speeds, ${sensor}` });
   for (let i = 1; i <= 4; i++) svg.append(s("circle", { cx: c, cy: c, r: (r * i) / 4, class: "ring" }));
-  svg.append(s("text", { x: c + 3, y: c - r - 2, class: "tick" }, fmt(max, 1)));
+  svg.append(s("text", { x: c + 3, y: c - r - 2, class: "tick" }, fmt(max)));
   svg.append(s("text", { x: c, y: 12, class: "tick", "text-anchor": "middle" }, "0°"));
   const sorted = [...points].sort((a, b) => a.speed - b.speed);
   svg.append(s("path", { d: path(sorted.map(at)), class: "series", stroke: "#1d4ed8" }));

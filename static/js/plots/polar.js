@@ -78,9 +78,9 @@ export function polarPlot({ sensor, unit, speed, phase, reference, trials, resid
   const legend = h(
     "ul",
     { class: "legend" },
-    h("li", {}, h("span", { class: "swatch", dataset: { colour: "ref" } }), `as found: ${fmt(reference.amplitude, 1)} at ${fmt(reference.phase_deg, 0)}°`),
+    h("li", {}, h("span", { class: "swatch", dataset: { colour: "ref" } }), `as found: ${fmt(reference.amplitude)} at ${fmt(reference.phase_deg, 0)}°`),
     trials.map((t, i) => h("li", {}, h("span", { class: "swatch dashed", dataset: { colour: String(i % COLOURS.length) } }), `effect of “${t.id}”`)),
-    res ? h("li", {}, h("span", { class: "swatch", dataset: { colour: "residual" } }), `predicted after correction: ${fmt(residual.amplitude, 1)} at ${fmt(residual.phase_deg, 0)}°`) : "",
+    res ? h("li", {}, h("span", { class: "swatch", dataset: { colour: "residual" } }), `predicted after correction: ${fmt(residual.amplitude)} at ${fmt(residual.phase_deg, 0)}°`) : "",
   );
   return h(
     "figure",

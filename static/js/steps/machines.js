@@ -137,7 +137,7 @@ async function machinePage(root, id, go) {
   // The jobs a version was pooled from, by name (a deleted one by its id).
   const jobName = new Map(sessions.map((x) => [x.id, x.name || x.id]));
   const fromJobs = (ids) => `${ids.length}${ids.length ? `: ${ids.map((i) => `“${jobName.get(i) || i}”`).join(", ")}` : ""}`;
-  const inUnit = (x, a, b) => `${fmt(a, 1)}, ${fmt(b, 1)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
+  const inUnit = (x, a, b) => `${fmt(a)}, ${fmt(b)}${units.get(x.id) ? ` ${units.get(x.id)}` : ""}`;
   replace(root,
     h("h2", {}, `Machine ${nameOf(m) || m.id}`, nameOf(m) ? h("small", {}, ` · ${m.id}`) : ""),
     m.rotor ? h("p", {}, `Rotor: ${fmt(m.rotor.mass_kg, 0)} kg, service speed ${fmt(m.rotor.service_speed_rpm, 0)} rpm${m.rotor.balance_grade ? `, balance grade ${m.rotor.balance_grade}` : ""}.`) : "",

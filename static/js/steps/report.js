@@ -21,8 +21,8 @@ function fitTable(sol) {
     h("table", {}, h("thead", {}, h("tr", {}, h("th", {}, "Plane"), h("th", {}, "Place"), h("th", {}, `Angle, ° (${angleWords(sol.conventions || state.setup.conventions)})`), h("th", {}, "Mass, g"))),
       h("tbody", {}, sol.fit.map((p) => (p.weights.length ? p.weights : [null]).map((w, i) =>
         h("tr", {}, h("td", {}, i === 0 ? p.plane : ""),
-          h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg, 1) : "–"), h("td", {}, w ? fmt(w.mass_g, 1) : "–")))))),
-    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after, 1)}${u}, max ${fmt(sol.fit_summary.max_after, 1)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
+          h("td", {}, w ? String(w.place) : "none"), h("td", {}, w ? fmt(w.angle_deg) : "–"), h("td", {}, w ? fmt(w.mass_g) : "–")))))),
+    sol.fit_summary ? h("p", {}, `With these weights: RMS ${fmt(sol.fit_summary.rms_after)}${u}, max ${fmt(sol.fit_summary.max_after)}${u}${optimal ? " (proven best for the kits)" : " (best found within the time bound, not proven best)"}.`) : "");
 }
 
 /** "(lag)" or "(lead)", for a column of phases. */
@@ -62,7 +62,7 @@ export function placeOf(plane, angle) {
 function weightRows(run) {
   const planes = new Map(state.setup.planes.map((p) => [p.id, p]));
   return run.weights.map((w, i) => h("tr", {},
-    h("td", {}, i === 0 ? run.id : ""), h("td", {}, w.plane), h("td", {}, `${fmt(w.mass_g, 1)} g`),
+    h("td", {}, i === 0 ? run.id : ""), h("td", {}, w.plane), h("td", {}, `${fmt(w.mass_g)} g`),
     h("td", {}, planes.get(w.plane) && planes.get(w.plane).radius_mm ? `${fmt(planes.get(w.plane).radius_mm, 0)} mm` : "–"),
     h("td", {}, fmtAngle(w.angle_deg)), h("td", { class: "place" }, placeOf(planes.get(w.plane), w.angle_deg))));
 }
@@ -83,7 +83,7 @@ function coefficientsTable(sol) {
       h("thead", {}, h("tr", {}, h("th", {}, "Speed, rpm"), h("th", {}, "Sensor"), h("th", {}, "Plane"), h("th", {}, "Amplitude per gram"), h("th", {}, `Phase, ° ${phaseOf(sol.conventions || state.setup.conventions)}`))),
       h("tbody", {}, (sol.influence_coefficients || []).map((c) => h("tr", {},
         h("td", {}, fmt(c.speed_rpm, 0)), h("td", {}, c.sensor), h("td", {}, c.plane),
-        h("td", {}, `${fmt(c.amplitude_per_g, 3)} ${unitLabel(units.get(c.sensor))}/g`), h("td", {}, fmt(c.phase_deg, 1)))))),
+        h("td", {}, `${fmt(c.amplitude_per_g, 3)} ${unitLabel(units.get(c.sensor))}/g`), h("td", {}, fmt(c.phase_deg)))))),
   ];
 }
 
@@ -143,7 +143,7 @@ export function renderReport(root) {
             return h("tr", { class: i === 0 ? "first" : "cont" },
               h("td", { class: "run-name" }, run.id), h("td", {}, i === 0 ? weightsText(run.weights) : ""),
               h("td", {}, fmt(row.speed, 0)), h("td", {}, row.sensor),
-              h("td", {}, r ? fmt(r.amplitude, 2) : "–"), h("td", {}, unitLabel(units.get(row.sensor))), h("td", {}, r ? fmt(r.phase_deg, 1) : "–"));
+              h("td", {}, r ? fmt(r.amplitude, 2) : "–"), h("td", {}, unitLabel(units.get(row.sensor))), h("td", {}, r ? fmt(r.phase_deg) : "–"));
           }))))),
       sol ? h("section", { class: "report-coeffs" }, h("h3", {}, "Influence coefficients used"), coefficientsTable(sol)) : "",
       sol ? h("section", { class: "report-residual" }, h("h3", {}, "Predicted vibration after correction"), residualTable(sol), residualNote(sol), runChecks(sol)) : "",

@@ -76,7 +76,7 @@ function answerTable(a) {
       ? `${fmtAngle(a.residual_angle_deg)} (undetermined)`
       : `${fmtAngle(a.residual_angle_deg)} (95 %: ${interval(u.residual_angle_deg, (x) => fmtAngle(x))})`],
     ["allowable", "Allowable, API 6350·W/N", gmm(a.allowable_gmm)],
-    ["trial", "Trial unbalance", `${gmm(a.trial_unbalance_gmm)} (${fmt(a.trial_ratio, 1)} × allowable; API asks 1 to 2)`],
+    ["trial", "Trial unbalance", `${gmm(a.trial_unbalance_gmm)} (${fmt(a.trial_ratio)} × allowable; API asks 1 to 2)`],
     ["method", "Fit", a.method === "circle_fit"
       ? `circle through ${a.positions} positions (amplitudes and phases)`
       : `amplitudes of ${a.positions} positions (no phases)`],

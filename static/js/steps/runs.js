@@ -29,7 +29,7 @@ function angleWords() {
   return state.setup.conventions.angle_direction === "with_rotation" ? "with rotation" : "against rotation";
 }
 
-export function weightsText(weights, num = (x) => fmt(x, 1)) {
+export function weightsText(weights, num = (x) => fmt(x)) {
   if (weights.length === 0) return "no weights (as found)";
   return weights.map((w) => `${w.plane}: ${num(w.mass_g)} g at ${num(w.angle_deg)}°`).join(", ");
 }

@@ -21,15 +21,15 @@ function uncertaintyParts(c) {
   const u = c.uncertainty;
   if (!u) return [];
   // No mass interval: the readings cannot determine this plane (plane_undetermined).
-  if (!u.mass_g) return [`${fmt(c.mass_g, 1)} g (undetermined)`, "angle undetermined"];
+  if (!u.mass_g) return [`${fmt(c.mass_g)} g (undetermined)`, "angle undetermined"];
   // A 95 % region around zero (the service gives the angle as [0, 360]): the
   // noise could account for the whole correction, so no angle can be trusted.
   if (u.angle_deg[1] - u.angle_deg[0] >= 359.999) {
-    return [`${fmt(c.mass_g, 1)} g (0 to ${fmt(u.mass_g[1], 1)} g)`, "angle undetermined"];
+    return [`${fmt(c.mass_g)} g (0 to ${fmt(u.mass_g[1])} g)`, "angle undetermined"];
   }
   const dm = Math.max(Math.abs(u.mass_g[1] - c.mass_g), Math.abs(c.mass_g - u.mass_g[0]));
   const da = Math.max(angleDiff(u.angle_deg[1], c.angle_deg), angleDiff(c.angle_deg, u.angle_deg[0]));
-  return [`${fmt(c.mass_g, 1)} g ± ${fmt(dm, 1)} g`, `${fmtAngle(c.angle_deg)} ± ${fmt(da, 1)}°`];
+  return [`${fmt(c.mass_g)} g ± ${fmt(dm)} g`, `${fmtAngle(c.angle_deg)} ± ${fmt(da)}°`];
 }
 
 /**
@@ -41,7 +41,7 @@ function uncertaintyParts(c) {
 function unbiasedLine(c) {
   const b = c.uncertainty && c.uncertainty.bias_corrected;
   if (!b) return "";
-  return h("div", { class: "corr-unbiased", title: UNBIASED_WORDS }, `without the noise's pull: ${fmt(b.mass_g, 1)} g at ${fmtAngle(b.angle_deg)}`);
+  return h("div", { class: "corr-unbiased", title: UNBIASED_WORDS }, `without the noise's pull: ${fmt(b.mass_g)} g at ${fmtAngle(b.angle_deg)}`);
 }
 
 /** "with rotation" or "against rotation": how the weight angles are counted from the mark. */
@@ -68,11 +68,11 @@ export function correctionsTable(solution) {
       const nothing = solution.from_run && c.mass_g < 0.05;
       return [h("tr", { dataset: { plane: c.plane }, class: doubt(solution, c) ? "doubtful" : nothing ? "nothing" : null, title: doubt(solution, c) || null },
       h("th", { class: "corr-plane" }, c.plane),
-      h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g, 1)} g`),
+      h("td", { class: "corr-mass" }, nothing ? "nothing to add" : `${fmt(c.mass_g)} g`),
       h("td", { class: "corr-angle" }, nothing ? "–" : fmtAngle(c.angle_deg)),
       h("td", { class: "corr-uncertainty" }, c.uncertainty ? [uncertaintyParts(c).map((part, i) => [i ? ", " : "", h("span", { class: "nw" }, part)]), nothing ? null : unbiasedLine(c)] : "–"),
       h("td", { class: "corr-unbalance" }, c.unbalance_gmm !== undefined && c.unbalance_gmm !== null ? `${fmt(c.unbalance_gmm, 0)} g·mm` : "–"),
-      h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g, 1)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
+      h("td", { class: "corr-split" }, c.split && !nothing ? c.split.map((p) => `${fmt(p.mass_g)} g at place ${p.position} (${fmtAngle(p.angle_deg)})`).join(" + ") : "–"),
       ), planeWarnings(solution, c.plane)];
     })),
   );
@@ -94,9 +94,9 @@ export function residualTable(solution) {
     h("tbody", {}, solution.predicted_residual.map((r) => h("tr", { class: r.used === false ? "unused" : "" },
       h("td", {}, fmt(r.speed_rpm, 0)),
       h("td", {}, r.sensor),
-      h("td", { class: "before" }, fmt(r.amplitude_before, 1)),
-      h("td", { class: "after" }, fmt(r.amplitude, 1)),
-      h("td", { class: "after95" }, r.amplitude_95 !== undefined && r.amplitude_95 !== null ? `≤ ${fmt(r.amplitude_95, 1)}` : "–"),
+      h("td", { class: "before" }, fmt(r.amplitude_before)),
+      h("td", { class: "after" }, fmt(r.amplitude)),
+      h("td", { class: "after95" }, r.amplitude_95 !== undefined && r.amplitude_95 !== null ? `≤ ${fmt(r.amplitude_95)}` : "–"),
       h("td", {}, negligible(r) ? "–" : fmtAngle(r.phase_deg)),
       h("td", {}, unitLabel(r.unit)),
     ))),
@@ -129,10 +129,10 @@ export function summaryBox(solution) {
   const inUnit = unit ? `, ${unit}` : "";
   return h("div", { class: doubtful ? "summary unsure" : "summary" },
     doubtful ? h("p", { class: "unsure-note" }, "Not to be trusted: the vibration after and the reduction below assume the corrections above are right, and the greyed ones may be far off. Do what is said under them first (a bigger trial weight, or a check run and a trim).") : "",
-    h("div", { class: "big" }, h("span", { class: "label" }, `RMS over sensors${inUnit}`), h("span", { class: "value" }, `${fmt(sm.rms_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.rms_after, 1)}`)),
-    h("div", { class: "big" }, h("span", { class: "label" }, `Largest${inUnit}`), h("span", { class: "value" }, `${fmt(sm.max_before, 1)} → ${doubtful ? "about " : ""}${fmt(sm.max_after, 1)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, `RMS over sensors${inUnit}`), h("span", { class: "value" }, `${fmt(sm.rms_before)} → ${doubtful ? "about " : ""}${fmt(sm.rms_after)}`)),
+    h("div", { class: "big" }, h("span", { class: "label" }, `Largest${inUnit}`), h("span", { class: "value" }, `${fmt(sm.max_before)} → ${doubtful ? "about " : ""}${fmt(sm.max_after)}`)),
     h("div", { class: "big" }, h("span", { class: "label" }, doubtful ? "Reduction, if the corrections were right" : "Reduction"), h("span", { class: "value" }, `${fmt(cut, 0)} %`)),
-    h("div", { class: "small" }, `Condition number ${fmt(solution.condition_number, 1)}`),
+    h("div", { class: "small" }, `Condition number ${fmt(solution.condition_number)}`),
     solution.iso_21940 ? h("div", { class: "small" }, `ISO 21940-11 ${solution.iso_21940.balance_grade}: permissible ${fmt(solution.iso_21940.permissible_per_plane_gmm, 0)} g·mm per plane`) : "",
   );
 }

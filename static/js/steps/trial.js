@@ -56,8 +56,8 @@ export function suggestionBox(d, k, rerender) {
   return h("div", { class: "suggestion" },
     h("h4", {}, `Suggested trial weights (about 30 % change in vibration; angles ${state.setup.conventions.angle_direction === "with_rotation" ? "with" : "against"} rotation from the mark)`),
     h("ul", {}, s.items.map((x) => h("li", { dataset: { plane: x.plane } },
-      `Plane ${x.plane}: ${fmt(x.mass_g, 1)} g at ${fmtAngle(x.angle_deg)}`,
-      x.weights ? ` — kit weights ${x.weights.map((m) => `${fmt(m, 1)} g`).join(" + ")} stacked at place ${x.place}` : "",
+      `Plane ${x.plane}: ${fmt(x.mass_g)} g at ${fmtAngle(x.angle_deg)}`,
+      x.weights ? ` — kit weights ${x.weights.map((m) => `${fmt(m)} g`).join(" + ")} stacked at place ${x.place}` : "",
       x.basis === "rotor" ? " (from the rotor's mass and speed: a centrifugal force of a tenth of its weight on the plane)" : x.expected_change_pct ? ` (expected change ${fmt(x.expected_change_pct, 0)} %)` : "",
       " ",
       h("button", { type: "button", class: "small use-suggestion", onclick: () => {
@@ -66,7 +66,7 @@ export function suggestionBox(d, k, rerender) {
         const angle = Number(fmtAngle(x.angle_deg).replace("°", ""));
         const masses = x.weights && x.weights.length ? x.weights : [x.mass_g];
         d.weights = d.weights.filter((w) => w.plane !== x.plane && w.mass_g !== null && w.mass_g !== undefined);
-        d.weights.push(...masses.map((m) => ({ plane: x.plane, mass_g: Number(fmt(m, 1)), angle_deg: angle })));
+        d.weights.push(...masses.map((m) => ({ plane: x.plane, mass_g: Number(fmt(m)), angle_deg: angle })));
         rerender();
       } }, "Use it")))));
 }

@@ -51,30 +51,36 @@ export function parseSamples(text) {
   return { values };
 }
 
-/** `x ± r` when a resolution is given. */
-function withResolution(x, r, unit = "") {
+// Never in exponent form ("5.9e-8"): to `k` decimals; a size under the last reads "< 0.001".
+const fixed = (x, k) => (Number(x.toFixed(k)) || 0).toFixed(k);
+const size = (x, k) => (x < 10 ** -k ? `< ${(10 ** -k).toFixed(k)}` : fixed(x, k));
+
+/** `x ± r`, both to `r`'s second significant digit, at most `most` decimals. */
+function withResolution(x, r, unit = "", most = 3) {
   const u = unit ? ` ${unit}` : "";
-  return Number.isFinite(r) ? `${sig(x, 5)}${u} ± ${sig(r, 2)}${u}` : `${sig(x, 5)}${u}`;
+  if (!Number.isFinite(r)) return `${sig(x, 5)}${u}`;
+  const k = Math.min(most, Math.max(0, 1 - Math.floor(Math.log10(r))));
+  return `${fixed(x, k)}${u} ± ${size(r, k)}${u}`;
 }
 
 function answerTable(a) {
   const undamped = a.undamped_frequency_hz ?? a.frequency_hz;
   const rows = [
     ["undamped-hz", "Undamped natural frequency", withResolution(undamped, a.frequency_resolution_hz, "Hz")],
-    ["undamped-rpm", "… in rpm (× 60)", withResolution(undamped * 60, Number.isFinite(a.frequency_resolution_hz) ? a.frequency_resolution_hz * 60 : undefined, "rpm")],
+    ["undamped-rpm", "… in rpm (× 60)", withResolution(undamped * 60, a.frequency_resolution_hz * 60, "rpm", 1)],
     ["damped-hz", "Damped frequency (what a spectrum shows)", `${sig(a.damped_frequency_hz, 5)} Hz`],
     ["damped-rpm", "… in rpm (× 60)", `${sig(a.damped_frequency_hz * 60, 5)} rpm`],
   ];
   if (Number.isFinite(a.damping_ratio)) {
     const zeta = a.damping_ratio_bound === "upper"
       ? `≤ ${sig(a.damping_ratio, 3)} (not resolved from zero)`
-      : withResolution(a.damping_ratio, a.damping_ratio_resolution);
+      : withResolution(a.damping_ratio, a.damping_ratio_resolution, "", 4);
     rows.push(["zeta", "Damping ratio ζ", zeta]);
   } else {
-    rows.push(["decrement", "Initial decrement δ₀ (turbulent: no single ζ)", sig(a.decrement, 4)]);
+    rows.push(["decrement", "Initial decrement δ₀ (turbulent: no single ζ)", fixed(a.decrement, 4)]);
   }
-  rows.push(["offset", "Offset (samples' unit)", sig(a.offset, 5)]);
-  rows.push(["fit-rms", "Fit RMS (samples' unit)", sig(a.fit_rms, 3)]);
+  rows.push(["offset", "Offset (samples' unit)", fixed(a.offset, 4)]);
+  rows.push(["fit-rms", "Fit RMS (samples' unit)", size(a.fit_rms, 4)]);
   return h("table", { class: "decay-answer" },
     h("tbody", {}, rows.map(([cls, label, value]) => h("tr", { class: cls }, h("th", { scope: "row" }, label), h("td", {}, value)))));
 }

@@ -90,7 +90,7 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
         "return document.querySelector('#step-decay table.decay-answer tr.decrement td').textContent",
     )
     .await;
-    assert_eq!(shown, json!(format!("{}", sig4(decrement))), "{said}");
+    assert_eq!(shown, json!(format!("{decrement:.4}")), "{said}");
 
     js(b, "window.scrollTo(0, 0); return true").await;
     shots(b, "free-decay").await;
@@ -116,11 +116,6 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
         "nothing comes back after starting over"
     );
     assert_eq!(answer_text(b, ANSWER).await, "");
-}
-
-/// `x` to 4 significant digits, shortest form (the page's `sig`).
-fn sig4(x: f64) -> f64 {
-    format!("{x:.3e}").parse().unwrap()
 }
 
 pub async fn a_heading_is_passed_over_and_a_time_column_refused(stand: &Stand) {

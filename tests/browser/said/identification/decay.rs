@@ -2,7 +2,9 @@
 //! decay pasted as a spreadsheet column, with decimal commas, is answered
 //! with the service's frequency and damping ratio, in Hz and rpm; a sampling
 //! step the service refuses is refused beside its field in the service's
-//! words. The form had no page for it.
+//! words. The form had no page for it. A column typed to six decimals is
+//! all but exact: its half-widths, offset and fit RMS read "< 0.001 Hz",
+//! "0.0000", "< 0.0001", not "5.9e-8 Hz", "-2.8888e-8", "2.79e-7".
 
 use serde_json::{json, Value};
 
@@ -80,20 +82,89 @@ pub async fn a_pasted_free_decay_is_answered_as_the_service_says(stand: &Stand) 
         (hz - damped).abs() <= 1e-4 * damped,
         "{hz} Hz damped for {said}"
     );
-    let z = shown("zeta").await;
-    assert!(
-        (leading(&z) - ratio).abs() <= 1e-4 * ratio,
-        "ζ {z} for {said}"
+    // All but exact: no half-width reaches the decimals shown.
+    let res = said["frequency_resolution_hz"].as_f64().expect("{said}");
+    let zeta_res = said["damping_ratio_resolution"].as_f64().expect("{said}");
+    let (offset, rms) = (
+        said["offset"].as_f64().unwrap(),
+        said["fit_rms"].as_f64().unwrap(),
     );
-    let res = said["damping_ratio_resolution"].as_f64().expect("{said}");
-    let after: f64 = z
-        .split('±')
-        .nth(1)
-        .unwrap_or_else(|| panic!("ζ {z:?} without its resolution"))
-        .trim()
-        .parse()
-        .unwrap();
-    assert!((after - res).abs() <= 0.05 * res, "ζ {z} for {said}");
+    assert!(
+        res < 1e-3 / 60.0 && zeta_res < 1e-4 && offset.abs() < 5e-5 && rms < 1e-4,
+        "{said}"
+    );
+    let mut cells = Vec::new();
+    for row in ["undamped-hz", "undamped-rpm", "zeta", "offset", "fit-rms"] {
+        cells.push(shown(row).await);
+    }
+    assert_eq!(
+        cells,
+        [
+            format!("{undamped:.3} Hz ± < 0.001 Hz"),
+            format!("{:.1} rpm ± < 0.1 rpm", 60.0 * undamped),
+            format!("{ratio:.4} ± < 0.0001"),
+            "0.0000".to_string(),
+            "< 0.0001".to_string(),
+        ],
+        "{said}"
+    );
+    let table = b.text("#step-decay table.decay-answer").await;
+    assert!(
+        !table.contains("e-") && !table.contains("e+"),
+        "no figure in exponent form: {table}"
+    );
+
+    // Scattered samples: each figure to its half-width's second significant
+    // digit, at most the decimals above (0.001 Hz, 0.1 rpm, 0.0001 for ζ).
+    let scattered: Vec<f64> = samples
+        .iter()
+        .enumerate()
+        .map(|(k, x)| x + 0.05 * ((k * 7919 % 101) as f64 / 50.0 - 1.0))
+        .collect();
+    let column: Vec<String> = scattered.iter().map(|x| format!("{x:.6}")).collect();
+    let scattered: Vec<f64> = column.iter().map(|s| s.parse().unwrap()).collect();
+    let said = post(
+        stand,
+        "/api/v1/identify/free-decay",
+        json!({ "samples": scattered, "dt_s": dt, "damping": "viscous" }),
+    )
+    .await;
+    type_into(b, "textarea[data-field=\"samples\"]", &column.join("\n")).await;
+    b.click("#step-decay button.identify").await;
+    let before = cells[0].clone();
+    b.wait_until(
+        "the scattered samples' answer",
+        &format!("return document.querySelector('#step-decay tr.undamped-hz td').textContent !== {before:?}"),
+    )
+    .await;
+    let figure = |k: &str| said[k].as_f64().unwrap_or_else(|| panic!("{k}: {said}"));
+    let pm = |x: f64, r: f64, most: i32, unit: &str| {
+        assert!(r >= 10f64.powi(-most), "a half-width to show: {said}");
+        let d = most.min((1 - r.log10().floor() as i32).max(0)) as usize;
+        format!("{x:.d$}{unit} ± {r:.d$}{unit}")
+    };
+    let (hz, res) = (
+        figure("undamped_frequency_hz"),
+        figure("frequency_resolution_hz"),
+    );
+    let mut cells = Vec::new();
+    for row in ["undamped-hz", "undamped-rpm", "zeta"] {
+        cells.push(shown(row).await);
+    }
+    assert_eq!(
+        cells,
+        [
+            pm(hz, res, 3, " Hz"),
+            pm(60.0 * hz, 60.0 * res, 1, " rpm"),
+            pm(
+                figure("damping_ratio"),
+                figure("damping_ratio_resolution"),
+                4,
+                ""
+            ),
+        ],
+        "{said}"
+    );
 
     // The page with its answer fits a 1024×768 screen without scrolling sideways.
     b.viewport(1024, 768).await;

@@ -112,7 +112,7 @@ export function angleDiff(a, b) {
  * A value that rounds to zero even so keeps `digits` + 1 decimals.
  */
 export function fmt(x, digits = 1) {
-  if (x === null || x === undefined || !Number.isFinite(x)) return "–";
+  if (!Number.isFinite(x)) return "–";
   const abs = Math.abs(x);
   const d = abs >= 1000 ? 0 : abs >= 100 ? Math.min(digits, 1) : abs > 0 && abs < 1 ? digits + 1 : digits;
   if (abs > 0 && abs < 0.1) {
@@ -133,7 +133,7 @@ export function fmtReading(x) {
 
 /** `x` to `digits` significant digits, shortest form ("–" for no number). */
 export function sig(x, digits = 4) {
-  if (x === null || x === undefined || !Number.isFinite(x)) return "–";
+  if (!Number.isFinite(x)) return "–";
   return String(Number(x.toPrecision(digits)));
 }
 

@@ -28,12 +28,43 @@ async fn opened(stand: &Stand, session: &Value) -> String {
     id
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
-    let stand = Stand::start().await;
+/// Solve the open job with its answer (or refusal) held back three seconds,
+/// as on a slow stand PC, and meanwhile open job `other` from the list at
+/// its corrections; wait until the first job's answer is back.
+async fn solve_then_open(stand: &Stand, other: &str) {
+    let b = &stand.browser;
+    js(
+        b,
+        "const f = window.fetch; \
+         window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
+           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
+         return true",
+    )
+    .await;
+    b.click("#step-solve button.solve").await;
+    // Meanwhile the technician opens the other job from the list, at its corrections.
+    b.click("nav [data-step=\"sessions\"]").await;
+    b.click(&format!(
+        "#step-sessions button.open-session[data-id=\"{other}\"]"
+    ))
+    .await;
+    b.wait_until(
+        "the other job is open",
+        "return document.querySelector('#job-title').textContent.startsWith('Other job')",
+    )
+    .await;
+    b.click("nav [data-step=\"solve\"]").await;
+    b.wait_until(
+        "the first job's answer or refusal is back",
+        "const s = document.querySelector('#step-solve'); return !!s.dataset.solves && s.dataset.solves === s.dataset.settled",
+    )
+    .await;
+}
+
+async fn the_corrections_read_after_a_re_solve_are_the_new_ones(stand: &Stand) {
     let b = &stand.browser;
     let (session, _) = example_session("pump-two-plane-exact.json");
-    opened(&stand, &session).await;
+    opened(stand, &session).await;
     b.click("#step-solve button.solve").await;
     let first = corrections_on_page(b).await;
     let (plane, heaviest, _) = first
@@ -43,7 +74,7 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
         .expect("corrections");
     let limit = (heaviest * 0.6).floor();
     let want = post(
-        &stand,
+        stand,
         "/api/v1/solve",
         json!({ "session": session, "options": { "max_mass_g": { plane.clone(): limit } } }),
     )
@@ -93,23 +124,20 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones() {
             "{p}: {mass} g at {angle}° read, the limited answer is {m} g at {a}° (the first answer: {first:?})"
         );
     }
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn the_reports_kit_weights_are_in_grams_to_a_tenth() {
-    let stand = Stand::start().await;
+async fn the_reports_kit_weights_are_in_grams_to_a_tenth(stand: &Stand) {
     let b = &stand.browser;
     let (mut session, _) = example_session("pump-two-plane-exact.json");
     for p in session["planes"].as_array_mut().unwrap() {
         p["positions"] = json!(12);
         p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
     }
-    opened(&stand, &session).await;
+    opened(stand, &session).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .plane-fig .fit-words").await;
     let service = post(
-        &stand,
+        stand,
         "/api/v1/solve",
         json!({ "session": session, "options": { "discrete": true } }),
     )
@@ -159,46 +187,17 @@ async fn the_reports_kit_weights_are_in_grams_to_a_tenth() {
             row[3]
         );
     }
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn an_answer_that_comes_back_after_another_job_is_opened_stays_with_its_job() {
-    let stand = Stand::start().await;
+async fn an_answer_that_comes_back_after_another_job_is_opened_stays_with_its_job(stand: &Stand) {
     let b = &stand.browser;
     let (mut session, _) = example_session("pump-two-plane-exact.json");
     session["name"] = json!("Other job");
-    let other = post(&stand, "/api/v1/sessions", session.clone()).await;
+    let other = post(stand, "/api/v1/sessions", session.clone()).await;
     let other = other["id"].as_str().expect("stored").to_string();
     session["name"] = json!("Solved job");
-    opened(&stand, &session).await;
-    // The answer is held back for three seconds, as on a slow stand PC.
-    js(
-        b,
-        "const f = window.fetch; \
-         window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
-           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
-         return true",
-    )
-    .await;
-    b.click("#step-solve button.solve").await;
-    // Meanwhile the technician opens the other job from the list, at its corrections.
-    b.click("nav [data-step=\"sessions\"]").await;
-    b.click(&format!(
-        "#step-sessions button.open-session[data-id=\"{other}\"]"
-    ))
-    .await;
-    b.wait_until(
-        "the other job is open",
-        "return document.querySelector('#job-title').textContent.startsWith('Other job')",
-    )
-    .await;
-    b.click("nav [data-step=\"solve\"]").await;
-    b.wait_until(
-        "the first job's answer is back",
-        "const s = document.querySelector('#step-solve'); return !!s.dataset.solves && s.dataset.solves === s.dataset.settled",
-    )
-    .await;
+    opened(stand, &session).await;
+    solve_then_open(stand, &other).await;
     let shown = js(
         b,
         "const s = document.querySelector('#step-solve'); return [document.querySelector('#job-title').textContent, !!s.querySelector('table.corrections'), s.querySelector('button.solve').disabled]",
@@ -209,49 +208,21 @@ async fn an_answer_that_comes_back_after_another_job_is_opened_stays_with_its_jo
         json!(["Other job · stored", false, false]),
         "the other job shows no answer of the first, and can be solved"
     );
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_job() {
-    let stand = Stand::start().await;
+async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_job(stand: &Stand) {
     let b = &stand.browser;
     let (mut session, _) = example_session("pump-two-plane-exact.json");
     session["name"] = json!("Other job");
-    let other = post(&stand, "/api/v1/sessions", session.clone()).await;
+    let other = post(stand, "/api/v1/sessions", session.clone()).await;
     let other = other["id"].as_str().expect("stored").to_string();
     // The zero run alone: the service refuses to solve it (too few trial runs).
     session["name"] = json!("Refused job");
     session["runs"] = json!([session["runs"][0].clone()]);
-    let refused = post(&stand, "/api/v1/solve", json!({ "session": session })).await;
+    let refused = post(stand, "/api/v1/solve", json!({ "session": session })).await;
     assert!(refused["error"]["message"].is_string(), "{refused}");
-    opened(&stand, &session).await;
-    // The refusal is held back for three seconds, as on a slow stand PC.
-    js(
-        b,
-        "const f = window.fetch; \
-         window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
-           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
-         return true",
-    )
-    .await;
-    b.click("#step-solve button.solve").await;
-    b.click("nav [data-step=\"sessions\"]").await;
-    b.click(&format!(
-        "#step-sessions button.open-session[data-id=\"{other}\"]"
-    ))
-    .await;
-    b.wait_until(
-        "the other job is open",
-        "return document.querySelector('#job-title').textContent.startsWith('Other job')",
-    )
-    .await;
-    b.click("nav [data-step=\"solve\"]").await;
-    b.wait_until(
-        "the first job's refusal is back",
-        "const s = document.querySelector('#step-solve'); return !!s.dataset.solves && s.dataset.solves === s.dataset.settled",
-    )
-    .await;
+    opened(stand, &session).await;
+    solve_then_open(stand, &other).await;
     let shown = js(
         b,
         "const s = document.querySelector('#step-solve'), e = s.querySelector('.banner.error'); \
@@ -263,23 +234,20 @@ async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_jo
         json!(["Other job · stored", null, 0, false]),
         "the other job shows no refusal of the first ({refused}), and can be solved"
     );
-    stand.stop().await;
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box() {
-    let stand = Stand::start().await;
+async fn the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box(stand: &Stand) {
     let b = &stand.browser;
     let (mut session, _) = example_session("pump-two-plane-exact.json");
     for p in session["planes"].as_array_mut().unwrap() {
         p["positions"] = json!(12);
         p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
     }
-    opened(&stand, &session).await;
+    opened(stand, &session).await;
     b.click("#step-solve button.solve").await;
     b.wait_for("#step-solve .fit-summary").await;
     let service = post(
-        &stand,
+        stand,
         "/api/v1/solve",
         json!({ "session": session, "options": { "discrete": true } }),
     )
@@ -304,5 +272,21 @@ async fn the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box() {
     let said = b.text("#step-report .report-fit p").await;
     let want = format!("With these weights: RMS {rms} µm pk-pk, max {max} µm pk-pk");
     assert!(said.starts_with(&want), "{said:?} should start {want:?}");
+}
+
+/// One browser for every scene (CI time); each scene gets a new server and
+/// database and a freshly loaded form (`Stand::renew`).
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_answer_is_read_as_it_is_meant() {
+    let mut stand = Stand::start().await;
+    the_corrections_read_after_a_re_solve_are_the_new_ones(&stand).await;
+    stand.renew().await;
+    the_reports_kit_weights_are_in_grams_to_a_tenth(&stand).await;
+    stand.renew().await;
+    an_answer_that_comes_back_after_another_job_is_opened_stays_with_its_job(&stand).await;
+    stand.renew().await;
+    a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_job(&stand).await;
+    stand.renew().await;
+    the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box(&stand).await;
     stand.stop().await;
 }

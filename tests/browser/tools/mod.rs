@@ -20,20 +20,17 @@ use crate::harness::stand::Stand;
 use crate::harness::steps::js;
 use crate::harness::Browser;
 
-/// One browser for both pages (CI time); each gets a new server and a freshly
-/// loaded form (`Stand::renew`), so nothing is kept from the other.
+/// One browser for both pages and both checks (CI time); each scene gets a
+/// new server and a freshly loaded form (`Stand::renew`), so nothing is
+/// kept from the one before: what was typed survives a reload and is sent
+/// as typed, and pasted columns are read as meant.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn the_stand_alone_pages_keep_what_was_typed_across_a_reload() {
+async fn the_stand_alone_pages_keep_what_was_typed_and_read_what_was_pasted() {
     let mut stand = Stand::start().await;
     decay::what_was_typed_survives_a_reload_and_is_sent_as_typed(&stand).await;
     stand.renew().await;
     residual::what_was_typed_survives_a_reload_and_is_sent_as_typed(&stand).await;
-    stand.stop().await;
-}
-
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn pasted_columns_are_read_as_meant() {
-    let mut stand = Stand::start().await;
+    stand.renew().await;
     decay::a_heading_is_passed_over_and_a_time_column_refused(&stand).await;
     stand.renew().await;
     residual::a_heading_and_degree_signs_are_passed_over(&stand).await;

@@ -12,29 +12,13 @@ use crate::harness::form::{choose, field, type_into};
 use crate::harness::job::sideways;
 use crate::harness::stand::{post, Stand};
 use crate::harness::steps::js;
-
-/// Paste `text` into the readings (a spreadsheet's tabs cannot be typed: a
-/// typed Tab moves the focus), as the browser does: the value, then `input`.
-async fn paste(b: &crate::harness::Browser, text: &str) {
-    js(
-        b,
-        &format!(
-            "const t = document.querySelector('#step-residual textarea[data-field=\"readings\"]'); t.value = {}; t.dispatchEvent(new Event('input', {{ bubbles: true }})); return null",
-            serde_json::to_string(text).unwrap()
-        ),
-    )
-    .await;
-}
+use crate::tools::residual::{lines, paste, twelve_positions};
 
 pub async fn a_residual_check_is_answered_as_the_service_says(stand: &Stand) {
     let b = &stand.browser;
     // The set-up has fields of the same names (conventions.phase): this page's.
     let here = |name: &str| format!("#step-residual {}", field(name));
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/residual/left-plane-12-positions.json"
-    );
-    let request: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let request = twelve_positions();
     let said = post(stand, "/api/v1/residual-unbalance", request.clone()).await;
     let residual = said["residual_unbalance_gmm"]
         .as_f64()
@@ -44,13 +28,7 @@ pub async fn a_residual_check_is_answered_as_the_service_says(stand: &Stand) {
     assert_eq!(said["pass"], json!(true), "{said}");
 
     b.click("nav [data-step=\"residual\"]").await;
-    let pasted: Vec<String> = request["readings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|r| format!("{}\t{}\t{}", r["angle_deg"], r["amplitude"], r["phase_deg"]))
-        .collect();
-    paste(b, &pasted.join("\n")).await;
+    paste(b, &lines(&request)).await;
     type_into(b, &here("plane"), request["plane"].as_str().unwrap()).await;
     type_into(b, &here("speed_rpm"), &request["speed_rpm"].to_string()).await;
     type_into(
@@ -140,13 +118,13 @@ pub async fn a_residual_check_is_answered_as_the_service_says(stand: &Stand) {
     // Three positions: the service's refusal, at the readings.
     let mut three = request.clone();
     three["readings"] = json!(request["readings"].as_array().unwrap()[..3].to_vec());
-    let refused = post(stand, "/api/v1/residual-unbalance", three).await;
+    let refused = post(stand, "/api/v1/residual-unbalance", three.clone()).await;
     let field_named = refused["error"]["field"]
         .as_str()
         .unwrap_or_else(|| panic!("{refused}"));
     assert!(field_named.starts_with("readings"), "{refused}");
     let message = refused["error"]["message"].as_str().unwrap();
-    paste(b, &pasted[..3].join("\n")).await;
+    paste(b, &lines(&three)).await;
     b.click("#step-residual button.check-residual").await;
     b.wait_until(
         "the refusal is shown at the readings",

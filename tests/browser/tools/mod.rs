@@ -12,7 +12,7 @@
 //! and samples alternating, and fitted).
 
 mod decay;
-mod residual;
+pub(crate) mod residual;
 
 use serde_json::Value;
 

@@ -24,18 +24,31 @@ const FIELDS: [&str; 8] = [
 ];
 const ANSWER: &str = "#step-residual .residual-result";
 
-/// Paste `text` into the readings.
-async fn paste(b: &crate::harness::Browser, text: &str) {
+/// Paste `text` into the readings (a spreadsheet's tabs cannot be typed: a
+/// typed Tab moves the focus).
+pub(crate) async fn paste(b: &crate::harness::Browser, text: &str) {
     super::paste(b, "#step-residual textarea[data-field=\"readings\"]", text).await;
 }
 
 /// The request of tests/data/residual: twelve positions of plane "left".
-fn twelve_positions() -> Value {
+pub(crate) fn twelve_positions() -> Value {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/residual/left-plane-12-positions.json"
     );
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The request's readings as a spreadsheet copies them: a line each,
+/// position angle, amplitude and phase separated by tabs.
+pub(crate) fn lines(request: &Value) -> String {
+    let lines: Vec<String> = request["readings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| format!("{}\t{}\t{}", r["angle_deg"], r["amplitude"], r["phase_deg"]))
+        .collect();
+    lines.join("\n")
 }
 
 pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand) {
@@ -44,13 +57,7 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
     let mut request = twelve_positions();
     // Not the defaults: what is kept is what was chosen.
     request["conventions"] = json!({ "phase": "lead", "angle_direction": "with_rotation" });
-    let pasted: Vec<String> = request["readings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|r| format!("{}\t{}\t{}", r["angle_deg"], r["amplitude"], r["phase_deg"]))
-        .collect();
-    let pasted = pasted.join("\n");
+    let pasted = lines(&request);
 
     b.click("nav [data-step=\"residual\"]").await;
     paste(b, &pasted).await;

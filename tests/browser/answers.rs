@@ -126,7 +126,10 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones(stand: &Stand) {
     }
 }
 
-async fn the_reports_kit_weights_are_in_grams_to_a_tenth(stand: &Stand) {
+/// The pump job with a kit of 1, 2, 5 and 10 g weights on twelve places a
+/// plane, solved on the page until `shown` is there; what the service
+/// answers it with the kits fitted (`discrete`).
+async fn kit_job_solved(stand: &Stand, shown: &str) -> Value {
     let b = &stand.browser;
     let (mut session, _) = example_session("pump-two-plane-exact.json");
     for p in session["planes"].as_array_mut().unwrap() {
@@ -135,13 +138,18 @@ async fn the_reports_kit_weights_are_in_grams_to_a_tenth(stand: &Stand) {
     }
     opened(stand, &session).await;
     b.click("#step-solve button.solve").await;
-    b.wait_for("#step-solve .plane-fig .fit-words").await;
-    let service = post(
+    b.wait_for(shown).await;
+    post(
         stand,
         "/api/v1/solve",
         json!({ "session": session, "options": { "discrete": true } }),
     )
-    .await;
+    .await
+}
+
+async fn the_reports_kit_weights_are_in_grams_to_a_tenth(stand: &Stand) {
+    let b = &stand.browser;
+    let service = kit_job_solved(stand, "#step-solve .plane-fig .fit-words").await;
     let fit = service["fit"]
         .as_array()
         .unwrap_or_else(|| panic!("the service fits the kits: {service}"));
@@ -238,20 +246,7 @@ async fn a_refusal_that_comes_back_after_another_job_is_opened_stays_with_its_jo
 
 async fn the_kit_fits_rms_reads_to_the_decimals_of_the_summary_box(stand: &Stand) {
     let b = &stand.browser;
-    let (mut session, _) = example_session("pump-two-plane-exact.json");
-    for p in session["planes"].as_array_mut().unwrap() {
-        p["positions"] = json!(12);
-        p["kit"] = json!({ "masses_g": [1, 2, 5, 10], "max_per_place": 3 });
-    }
-    opened(stand, &session).await;
-    b.click("#step-solve button.solve").await;
-    b.wait_for("#step-solve .fit-summary").await;
-    let service = post(
-        stand,
-        "/api/v1/solve",
-        json!({ "session": session, "options": { "discrete": true } }),
-    )
-    .await;
+    let service = kit_job_solved(stand, "#step-solve .fit-summary").await;
     let figure = |k: &str| fmt(service["fit_summary"][k].as_f64().unwrap(), 1);
     let (rms, max) = (figure("rms_after"), figure("max_after"));
     // The summary box's RMS after the exact corrections, as it shows it.

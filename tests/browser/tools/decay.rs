@@ -4,8 +4,8 @@
 use serde_json::json;
 
 use super::{
-    answer_text, message_at, parsed, paste, press_and_wait, record_requests, reload, sent_to,
-    stale, start_over, start_over_accepted, values,
+    answer_text, message_at, parsed, paste, press_and_wait, record_requests, reload,
+    says_nothing_is_stored_on_the_service, sent_to, stale, starts_over, values,
 };
 use crate::harness::form::{choose, field, type_into};
 use crate::harness::job::shots;
@@ -61,19 +61,7 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
         answered,
         "the answer shown before the reload is shown after it"
     );
-    // Kept in this browser, so the page no longer says that nothing is stored at all.
-    let note = js(
-        b,
-        "return document.querySelector('#step-decay p.note').textContent",
-    )
-    .await;
-    assert!(
-        note.as_str()
-            .unwrap()
-            .to_lowercase()
-            .contains("nothing is stored on the service."),
-        "{note}"
-    );
+    says_nothing_is_stored_on_the_service(b, "decay").await;
 
     // Sent again after the reload: the same request as typed, answered as the service answers it.
     record_requests(b).await;
@@ -96,26 +84,9 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
     shots(b, "free-decay").await;
     fits_a_tablet(b, "free decay").await;
 
-    // Start over: asked first; "no" keeps everything.
-    let asked = start_over(b, "decay").await;
-    assert!(asked.contains("samples"), "{asked}");
-    assert_eq!(values(b, "decay", &FIELDS).await, kept);
-    start_over_accepted(b, "decay").await;
-    let emptied = vec![
-        String::new(),
-        String::new(),
-        "viscous".into(),
-        String::new(),
-    ];
-    assert_eq!(values(b, "decay", &FIELDS).await, emptied);
-    assert_eq!(answer_text(b, ANSWER).await, "");
-    reload(b, "decay").await;
-    assert_eq!(
-        values(b, "decay", &FIELDS).await,
-        emptied,
-        "nothing comes back after starting over"
-    );
-    assert_eq!(answer_text(b, ANSWER).await, "");
+    // Start over: asked first; "no" keeps everything, "yes" empties the page for good.
+    let emptied = ["", "", "viscous", ""];
+    starts_over(b, "decay", &FIELDS, &kept, "samples", &emptied, ANSWER).await;
 }
 
 pub async fn a_heading_is_passed_over_and_a_time_column_refused(stand: &Stand) {

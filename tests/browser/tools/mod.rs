@@ -208,3 +208,47 @@ async fn start_over_accepted(b: &Browser, step: &str) {
     crate::newuser::confirmation(b).await;
     b.client.accept_alert().await.unwrap();
 }
+
+/// The page's note says that what is typed is kept in this browser only:
+/// "nothing is stored on the service" (it said "nothing is stored").
+async fn says_nothing_is_stored_on_the_service(b: &Browser, step: &str) {
+    let note = js(
+        b,
+        &format!("return document.querySelector('#step-{step} p.note').textContent"),
+    )
+    .await;
+    assert!(
+        note.as_str()
+            .unwrap()
+            .to_lowercase()
+            .contains("nothing is stored on the service."),
+        "{note}"
+    );
+}
+
+/// Start over on `step`: the question names `word` and "no" keeps the
+/// `fields` as they were (`kept`); "yes" leaves them `emptied` and no answer
+/// at `answer`, and a reload brings nothing back.
+async fn starts_over(
+    b: &Browser,
+    step: &str,
+    fields: &[&str],
+    kept: &[String],
+    word: &str,
+    emptied: &[&str],
+    answer: &str,
+) {
+    let asked = start_over(b, step).await;
+    assert!(asked.contains(word), "{asked}");
+    assert_eq!(values(b, step, fields).await, kept);
+    start_over_accepted(b, step).await;
+    assert_eq!(values(b, step, fields).await, emptied);
+    assert_eq!(answer_text(b, answer).await, "");
+    reload(b, step).await;
+    assert_eq!(
+        values(b, step, fields).await,
+        emptied,
+        "nothing comes back after starting over"
+    );
+    assert_eq!(answer_text(b, answer).await, "");
+}

@@ -4,8 +4,8 @@
 use serde_json::{json, Value};
 
 use super::{
-    answer_text, parsed, press_and_wait, record_requests, reload, sent_to, stale, start_over,
-    start_over_accepted, values,
+    answer_text, parsed, press_and_wait, record_requests, reload,
+    says_nothing_is_stored_on_the_service, sent_to, stale, starts_over, values,
 };
 use crate::harness::form::{choose, field, type_into};
 use crate::harness::job::shots;
@@ -102,19 +102,7 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
         answered,
         "the answer shown before the reload is shown after it"
     );
-    // Kept in this browser, so the page no longer says that nothing is stored at all.
-    let note = js(
-        b,
-        "return document.querySelector('#step-residual p.note').textContent",
-    )
-    .await;
-    assert!(
-        note.as_str()
-            .unwrap()
-            .to_lowercase()
-            .contains("nothing is stored on the service."),
-        "{note}"
-    );
+    says_nothing_is_stored_on_the_service(b, "residual").await;
 
     // Sent again after the reload: the same request, answered as the service answers it.
     record_requests(b).await;
@@ -154,24 +142,9 @@ pub async fn what_was_typed_survives_a_reload_and_is_sent_as_typed(stand: &Stand
     shots(b, "residual-check").await;
     fits_a_tablet(b, "residual check").await;
 
-    // Start over: asked first; "no" keeps everything.
-    let asked = start_over(b, "residual").await;
-    assert!(asked.contains("readings"), "{asked}");
-    assert_eq!(values(b, "residual", &FIELDS).await, kept);
-    start_over_accepted(b, "residual").await;
-    let emptied: Vec<String> = ["", "", "", "", "", "", "lag", "against_rotation"]
-        .iter()
-        .map(|s| s.to_string())
-        .collect();
-    assert_eq!(values(b, "residual", &FIELDS).await, emptied);
-    assert_eq!(answer_text(b, ANSWER).await, "");
-    reload(b, "residual").await;
-    assert_eq!(
-        values(b, "residual", &FIELDS).await,
-        emptied,
-        "nothing comes back after starting over"
-    );
-    assert_eq!(answer_text(b, ANSWER).await, "");
+    // Start over: asked first; "no" keeps everything, "yes" empties the page for good.
+    let emptied = ["", "", "", "", "", "", "lag", "against_rotation"];
+    starts_over(b, "residual", &FIELDS, &kept, "readings", &emptied, ANSWER).await;
 }
 
 /// Each reading's angle, amplitude and phase.

@@ -15,6 +15,7 @@ use serde_json::{json, Value};
 use crate::harness::form::{corrections_on_page, field, type_into};
 use crate::harness::stand::{example_session, open_at_solve, post, Stand};
 use crate::harness::steps::js;
+use crate::harness::Browser;
 use crate::scenes::kit_support::fmt;
 
 /// Store `session` and open it at its corrections step in the stand's browser.
@@ -28,11 +29,9 @@ async fn opened(stand: &Stand, session: &Value) -> String {
     id
 }
 
-/// Solve the open job with its answer (or refusal) held back three seconds,
-/// as on a slow stand PC, and meanwhile open job `other` from the list at
-/// its corrections; wait until the first job's answer is back.
-async fn solve_then_open(stand: &Stand, other: &str) {
-    let b = &stand.browser;
+/// From now on the page's solves are answered three seconds late (the
+/// service's answer held back in the page's `fetch`), as on a slow stand PC.
+async fn hold_back_solves(b: &Browser) {
     js(
         b,
         "const f = window.fetch; \
@@ -41,6 +40,14 @@ async fn solve_then_open(stand: &Stand, other: &str) {
          return true",
     )
     .await;
+}
+
+/// Solve the open job with its answer (or refusal) held back three seconds,
+/// as on a slow stand PC, and meanwhile open job `other` from the list at
+/// its corrections; wait until the first job's answer is back.
+async fn solve_then_open(stand: &Stand, other: &str) {
+    let b = &stand.browser;
+    hold_back_solves(b).await;
     b.click("#step-solve button.solve").await;
     // Meanwhile the technician opens the other job from the list, at its corrections.
     b.click("nav [data-step=\"sessions\"]").await;
@@ -81,14 +88,7 @@ async fn the_corrections_read_after_a_re_solve_are_the_new_ones(stand: &Stand) {
     .await;
     // The page's next answer is held back for three seconds: the old
     // one is on the page meanwhile, as on a slow stand PC.
-    js(
-        b,
-        "const f = window.fetch; \
-         window.fetch = (url, init) => f(url, init).then((r) => /\\/solutions$/.test(String(url)) && init && init.method === 'POST' \
-           ? new Promise((ok) => setTimeout(() => ok(r), 3000)) : r); \
-         return true",
-    )
-    .await;
+    hold_back_solves(b).await;
     b.click("#step-solve details.options summary").await;
     let css = field(&format!("options.max_mass_g.{plane}"));
     type_into(b, &css, &format!("{limit}")).await;

@@ -106,6 +106,13 @@ pub struct FreeDecay {
     /// Viscous: the 95 % half-width of `damping_ratio` (as `frequency_resolution_hz`'s).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub damping_ratio_resolution: Option<f64>,
+    /// `"upper"` where the fitted damping ratio lies within its resolution of
+    /// zero (either sign): it is then no estimate, and `damping_ratio` is the
+    /// most the samples allow (the fitted one, if positive, plus the
+    /// resolution), with a `damping_unresolved` warning; as the rotor
+    /// identification's results give it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping_ratio_bound: Option<String>,
     /// `ω0²`, 1/s².
     pub c_over_m: f64,
     /// Viscous: `2n` (1/s); turbulent: `μ` (1/unit of y).
@@ -130,6 +137,31 @@ pub struct FreeDecay {
     /// `clipped` (flat at a rail the fitted decay goes past).
     #[serde(default)]
     pub warnings: Vec<Warning>,
+}
+
+/// A damping ratio within its 95 % resolution of zero (either sign) is no
+/// estimate: an undamped record fitted `ζ = −2.2e-11 ± 7e-11`, answered as a
+/// (negative) damping ratio (review, session 25). It is given as the most
+/// the samples allow, `max(ζ, 0) + resolution`, with `damping_ratio_bound`
+/// `upper` and a `damping_unresolved` warning, as the rotor identification
+/// gives it; the decrement and `b_over_m` stay the fitted ones.
+fn unresolved_damping(got: &mut FreeDecay) {
+    let (Some(zeta), Some(resolution)) = (got.damping_ratio, got.damping_ratio_resolution) else {
+        return;
+    };
+    if zeta.abs() > resolution {
+        return;
+    }
+    let most = zeta.max(0.0) + resolution;
+    got.damping_ratio = Some(most);
+    got.damping_ratio_bound = Some("upper".into());
+    got.warnings.push(Warning {
+        code: "damping_unresolved".into(),
+        message: format!(
+            "the damping ratio is not resolved from zero: the fitted {zeta:.3e} lies within its 95 % resolution ({resolution:.3e}), so the samples say only that it is at most {most:.3e}; a longer record, or one with less noise, resolves a smaller damping"
+        ),
+        plane: None,
+    });
 }
 
 /// Samples a period of the fitted decay below which the answer warns
@@ -240,6 +272,7 @@ pub fn identify(req: &FreeDecayRequest) -> Result<FreeDecay, InputError> {
         ));
     }
     above_noise(&samples, &got, fit_offset)?;
+    unresolved_damping(&mut got);
     if let Some(w) = clipped(&req.samples, &got, theta, req.damping) {
         got.warnings.push(w);
     }
@@ -554,6 +587,7 @@ fn viscous(y: &[f64], tau: f64, with_offset: bool) -> Result<Fitted, InputError>
         damped_frequency_hz: wd / std::f64::consts::TAU,
         damping_ratio: Some(n / w0),
         damping_ratio_resolution: half_width([wd * wd / w3, -n * wd / w3]),
+        damping_ratio_bound: None,
         c_over_m,
         b_over_m: 2.0 * n,
         decrement: std::f64::consts::TAU * n / wd,
@@ -704,6 +738,7 @@ fn turbulent(y: &[f64], tau: f64, with_offset: bool) -> Result<Fitted, InputErro
         undamped_frequency_hz: w / std::f64::consts::TAU,
         damped_frequency_hz: w / std::f64::consts::TAU,
         damping_ratio: None,
+        damping_ratio_bound: None,
         frequency_resolution_hz: cov
             .map(|c| t * c[1][1].max(0.0).sqrt() / (std::f64::consts::TAU * tau))
             .filter(|x| x.is_finite()),

@@ -94,27 +94,14 @@ pub fn sqlite_file(url: &str) -> Option<std::path::PathBuf> {
     std::path::absolute(Path::new(&path)).ok()
 }
 
-/// `text` with each `%XX` replaced by its byte; `None` when the bytes are not
-/// UTF-8 (sqlx refuses such a URL).
+/// `text` with each `%XX` replaced by its byte (the `percent-encoding`
+/// crate `url` is built on); `None` when the bytes are not UTF-8 (sqlx
+/// refuses such a URL).
 fn percent_decoded(text: &str) -> Option<String> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        let hex = |b: u8| char::from(b).to_digit(16);
-        match (bytes[i], bytes.get(i + 1), bytes.get(i + 2)) {
-            (b'%', Some(&h), Some(&l)) if hex(h).is_some() && hex(l).is_some() => {
-                let byte = hex(h).and_then(|h| hex(l).map(|l| h * 16 + l))?;
-                out.push(u8::try_from(byte).ok()?);
-                i += 3;
-            }
-            (b, _, _) => {
-                out.push(b);
-                i += 1;
-            }
-        }
-    }
-    String::from_utf8(out).ok()
+    percent_encoding::percent_decode_str(text)
+        .decode_utf8()
+        .ok()
+        .map(|s| s.into_owned())
 }
 
 /// How long an SQLite connection waits for another process's writer.
